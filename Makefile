@@ -1,0 +1,45 @@
+# The README's two commands. Each creates .venv when it is missing, installs the project with its
+# test extra into it, and checks the few Debian packages headless 3D rendering needs.
+#
+#   make lab     open the course in JupyterLab
+#   make test    run the whole suite: unit, property and cross-check tests, doctests, headless
+#                widget tests and nbval over notebooks/, solutions/ and exercises/
+#
+# Other targets: make exercises (rebuild exercises/ from solutions/), make notebooks (re-execute
+# every notebook and store its outputs), make benchmarks, make clean.
+
+PYTHON ?= python3
+VENV   ?= .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed
+PYTEST_ARGS ?=
+
+.PHONY: lab test system-packages exercises notebooks benchmarks clean
+
+lab: $(STAMP)
+	@scripts/system-packages --warn-only
+	$(BIN)/jupyter lab --ServerApp.root_dir=. --LabApp.default_url=/lab/tree/notebooks
+
+test: $(STAMP)
+	@scripts/system-packages
+	$(BIN)/python -m pytest -n 2 --dist loadscope $(PYTEST_ARGS)
+
+$(STAMP): pyproject.toml
+	@scripts/system-packages --python-only
+	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e '.[test]'
+	touch $(STAMP)
+
+exercises: $(STAMP)
+	$(BIN)/python -m course_lib.exercises.build
+
+notebooks: $(STAMP)
+	$(BIN)/python -m course_lib.exercises.build --execute
+
+benchmarks: $(STAMP)
+	@scripts/system-packages
+	$(BIN)/python -m benchmarks
+
+clean:
+	rm -rf $(VENV) build *.egg-info .pytest_cache

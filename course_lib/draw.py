@@ -1,0 +1,397 @@
+"""Drawing helpers shared by the notebooks and the widgets (matplotlib, and pyvista set-up).
+
+Figures are made with :func:`figure`, which keeps ipympl from showing a figure on its own when a
+widget puts it inside a layout, and styles the canvas once for all widgets. The 3D helpers draw
+coordinate frames and polygon meshes whose artists are later *updated* (never re-created), which
+is what keeps widget updates fast.
+"""
+import os
+import sys
+
+import numpy as np
+
+__all__ = [
+    "AXIS_COLORS",
+    "Blitter",
+    "configure_offscreen_vtk",
+    "face_normals",
+    "figure",
+    "frame_3d",
+    "mesh_3d",
+    "set_frame_3d",
+    "set_mesh_3d",
+    "setup_axes_2d",
+    "setup_axes_3d",
+    "shade",
+]
+
+#: The colours of the x, y and z axes in every figure (red, green, blue, as in most 3D tools).
+AXIS_COLORS = ("#d62728", "#2ca02c", "#1f77b4")
+
+
+def configure_offscreen_vtk():
+    """Make VTK render off screen through EGL on a Linux machine without a display.
+
+    Without a display VTK tries X11, prints a timestamped warning, and on a machine without GL
+    libraries crashes. EGL (Debian packages ``libegl1`` and ``libgl1-mesa-dri``, which ``make``
+    installs) renders without any display. Call before importing pyvista or vtk; a value already
+    set in the environment is kept.
+
+    Examples
+    --------
+    >>> configure_offscreen_vtk()
+    """
+    if sys.platform.startswith("linux") and not os.environ.get("DISPLAY"):
+        os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+
+
+def figure(figsize=(4.5, 4.5), dpi=90, **kwargs):
+    """A new matplotlib figure that is not displayed by itself.
+
+    With the ipympl backend (``%matplotlib widget``) a figure created in a cell is shown at the
+    end of the cell; a widget that places the canvas in its own layout would then show it twice.
+    The canvas's header is hidden and the toolbar kept to the left.
+
+    Parameters
+    ----------
+    figsize : (float, float)
+        Size in inches; keep widget figures small, every pixel costs redraw time.
+    dpi : float
+    **kwargs
+        Passed to ``matplotlib.pyplot.figure``.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> fig = figure(figsize=(2, 2))
+    >>> fig.get_size_inches().tolist()
+    [2.0, 2.0]
+    """
+    import matplotlib.pyplot as plt
+
+    with plt.ioff():
+        fig = plt.figure(figsize=figsize, dpi=dpi, **kwargs)
+    canvas = fig.canvas
+    for name, value in (("header_visible", False), ("footer_visible", False),
+                        ("toolbar_position", "left"), ("resizable", False)):
+        if hasattr(canvas, name):
+            setattr(canvas, name, value)
+    return fig
+
+
+def setup_axes_2d(ax, limits, title=None, grid=True):
+    """Equal-aspect 2D axes with labelled x and y and the given square limits.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    limits : (float, float)
+        The same (min, max) for both axes.
+    title : str, optional
+    grid : bool, optional
+
+    Examples
+    --------
+    >>> fig = figure(figsize=(2, 2))
+    >>> ax = fig.add_subplot()
+    >>> setup_axes_2d(ax, (-1, 1))
+    >>> ax.get_xlim()
+    (np.float64(-1.0), np.float64(1.0))
+    """
+    ax.set(xlim=limits, ylim=limits, xlabel="x", ylabel="y", aspect="equal")
+    if title:
+        ax.set_title(title)
+    if grid:
+        ax.grid(True, color="0.9", zorder=0)
+    ax.axhline(0, color="0.6", lw=0.8, zorder=1)
+    ax.axvline(0, color="0.6", lw=0.8, zorder=1)
+
+
+def setup_axes_3d(ax, radius=1.5, title=None, elev=22, azim=-60, box=True):
+    """3D axes with equal scales on x, y, z over [-radius, radius].
+
+    With ``box=True`` the usual matplotlib box with ticks, grid and labels. With ``box=False``
+    the box is hidden and a light reference frame with labelled x, y, z axes drawn instead:
+    it reads as well for geometry and redraws about twice as fast, which widgets need.
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+    radius : float
+    title : str, optional
+    elev, azim : float
+        Initial viewing angles in degrees (the student can drag the view).
+    box : bool, optional
+
+    Examples
+    --------
+    >>> fig = figure(figsize=(2, 2))
+    >>> ax = fig.add_subplot(projection="3d")
+    >>> setup_axes_3d(ax, radius=2)
+    >>> ax.get_zlim()
+    (np.float64(-2.0), np.float64(2.0))
+    """
+    lim = (-radius, radius)
+    ax.set(xlim=lim, ylim=lim, zlim=lim)
+    ax.set_box_aspect((1, 1, 1), zoom=1.0 if box else 1.35)
+    ax.view_init(elev=elev, azim=azim)
+    if box:
+        ax.set(xlabel="x", ylabel="y", zlabel="z")
+        ax.tick_params(labelsize=7, pad=0)
+        for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+            axis.labelpad = -4
+    else:
+        ax.set_axis_off()
+        end = 0.92 * radius
+        for k, name in enumerate("xyz"):
+            tip = np.zeros(3)
+            tip[k] = end
+            ax.plot(*np.array([-tip, tip]).T, color="0.75", lw=0.8)
+            ax.text(*(1.06 * tip), name, color="0.35", fontsize=9, ha="center", va="center")
+        circle = np.linspace(0, 2 * np.pi, 73)
+        ax.plot(end * np.cos(circle), end * np.sin(circle), 0 * circle, color="0.85", lw=0.8)
+    if title:
+        ax.set_title(title, fontsize=10)
+
+
+def frame_3d(ax, length=1.0, **style):
+    """Three line artists for the x, y, z axes of a coordinate frame (in red, green, blue).
+
+    Move them with :func:`set_frame_3d`.
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+    length : float
+        Length of each axis.
+    **style
+        Line properties, e.g. ``lw=3`` or ``alpha=0.3``.
+
+    Returns
+    -------
+    list of three Line3D
+
+    Examples
+    --------
+    >>> fig = figure(figsize=(2, 2))
+    >>> lines = frame_3d(fig.add_subplot(projection="3d"))
+    >>> len(lines)
+    3
+    """
+    style = {"lw": 2.5, **style}
+    lines = []
+    for k in range(3):
+        end = np.zeros(3)
+        end[k] = length
+        (line,) = ax.plot([0, end[0]], [0, end[1]], [0, end[2]], color=AXIS_COLORS[k], **style)
+        lines.append(line)
+    return lines
+
+
+def set_frame_3d(lines, rotation, length=1.0, origin=(0.0, 0.0, 0.0)):
+    """Point the frame's three lines along the columns of `rotation` (the rotated axes).
+
+    Parameters
+    ----------
+    lines : list of three Line3D
+        From :func:`frame_3d`.
+    rotation : array_like, shape (3, 3)
+        Its columns are the images of the x, y and z axes.
+    length : float
+    origin : array_like, shape (3,)
+
+    Examples
+    --------
+    >>> fig = figure(figsize=(2, 2))
+    >>> lines = frame_3d(fig.add_subplot(projection="3d"))
+    >>> set_frame_3d(lines, np.eye(3)[:, [1, 2, 0]])
+    >>> lines[0].get_data_3d()[1].tolist()      # the x axis now points along y
+    [0.0, 1.0]
+    """
+    o = np.asarray(origin, dtype=float)
+    r = np.asarray(rotation, dtype=float)
+    for k, line in enumerate(lines):
+        end = o + length * r[:, k]
+        line.set_data_3d([o[0], end[0]], [o[1], end[1]], [o[2], end[2]])
+
+
+def shade(normals, base_color, light=(0.4, -0.5, 0.75), ambient=0.45):
+    """Flat-shaded face colours: ``base_color`` dimmed by the angle to a fixed light.
+
+    A Lambert term (chapter 12) gives the 3D shapes of the widgets their depth cue.
+
+    Parameters
+    ----------
+    normals : array_like, shape (n, 3)
+        Face normals (any length).
+    base_color : array_like, shape (3,) or (n, 3)
+        RGB in [0, 1].
+    light : array_like, shape (3,)
+        Direction towards the light.
+    ambient : float
+        The brightness of a face turned away from the light.
+
+    Returns
+    -------
+    ndarray, shape (n, 3)
+
+    Examples
+    --------
+    >>> shade([[0, 0, 1], [0, 0, -1]], [1.0, 0.5, 0.0]).round(2).tolist()
+    [[0.86, 0.43, 0.0], [0.45, 0.22, 0.0]]
+    """
+    n = np.asarray(normals, dtype=float)
+    n = n / np.maximum(np.linalg.norm(n, axis=-1, keepdims=True), 1e-12)
+    l_dir = np.asarray(light, dtype=float)
+    l_dir = l_dir / np.linalg.norm(l_dir)
+    lambert = np.clip(n @ l_dir, 0.0, 1.0)
+    return np.asarray(base_color, dtype=float) * (ambient + (1 - ambient) * lambert)[:, None]
+
+
+def mesh_3d(ax, vertices, faces, **style):
+    """A Poly3DCollection for a polygon mesh, to be moved later with :func:`set_mesh_3d`.
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+    vertices : array_like, shape (n, 3)
+    faces : list of lists of int
+        Vertex indices of each polygon.
+    **style
+        Collection properties (``edgecolor``, ``linewidth``, ``alpha``...).
+
+    Returns
+    -------
+    mpl_toolkits.mplot3d.art3d.Poly3DCollection
+
+    Examples
+    --------
+    >>> fig = figure(figsize=(2, 2))
+    >>> mesh = mesh_3d(fig.add_subplot(projection="3d"), np.eye(3), [[0, 1, 2]])
+    >>> len(mesh.get_paths())
+    1
+    """
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    v = np.asarray(vertices, dtype=float)
+    style = {"edgecolor": "0.2", "linewidth": 0.6, **style}
+    collection = Poly3DCollection([v[f] for f in faces], **style)
+    ax.add_collection3d(collection)
+    return collection
+
+
+def set_mesh_3d(collection, vertices, faces, facecolors=None):
+    """Move a mesh drawn by :func:`mesh_3d` to new vertex positions (and recolour its faces).
+
+    Examples
+    --------
+    >>> fig = figure(figsize=(2, 2))
+    >>> mesh = mesh_3d(fig.add_subplot(projection="3d"), np.eye(3), [[0, 1, 2]])
+    >>> set_mesh_3d(mesh, 2 * np.eye(3), [[0, 1, 2]], facecolors=[[1.0, 0.0, 0.0]])
+    """
+    v = np.asarray(vertices, dtype=float)
+    collection.set_verts([v[f] for f in faces])
+    if facecolors is not None:
+        collection.set_facecolor(facecolors)
+
+
+def face_normals(vertices, faces):
+    """Unit normals of planar polygons (Newell's method; counter-clockwise faces point out).
+
+    Examples
+    --------
+    >>> face_normals(np.eye(3), [[0, 1, 2]]).round(3).tolist()
+    [[0.577, 0.577, 0.577]]
+    """
+    v = np.asarray(vertices, dtype=float)
+    normals = []
+    for f in faces:
+        p = v[f]
+        q = np.roll(p, -1, axis=0)
+        n = np.array([np.sum((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])),
+                      np.sum((p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0])),
+                      np.sum((p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1]))])
+        normals.append(n / max(np.linalg.norm(n), 1e-12))
+    return np.array(normals)
+
+
+class Blitter:
+    """Redraw only the moving artists of a figure: matplotlib's blitting, for fast widgets.
+
+    A full redraw of a figure repaints its axes, ticks and text, which costs tens of
+    milliseconds. The blitter keeps a picture of everything that does not move (taken after each
+    full draw, e.g. when the student turns a 3D view) and on :meth:`update` pastes it back and
+    draws only the given artists on top. Where the canvas cannot blit, :meth:`update` falls back
+    to ``draw_idle``.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+    artists : list of Artist
+        The artists that move. They are drawn after (on top of) the static ones; 3D polygon
+        collections among them are ordered far to near, as ``Axes3D`` does.
+
+    Examples
+    --------
+    >>> fig = figure(figsize=(2, 2))
+    >>> (line,) = fig.add_subplot().plot([0, 1], [0, 1])
+    >>> blitter = Blitter(fig, [line])
+    >>> fig.canvas.draw()                # a full draw: takes the background
+    >>> line.set_ydata([1, 0])
+    >>> blitter.update()                 # pastes it back and redraws the line only
+    """
+
+    def __init__(self, fig, artists):
+        self.fig = fig
+        self.artists = list(artists)
+        self.background = None
+        self._saving = False
+        for artist in self.artists:
+            artist.set_animated(True)
+        self._cid = fig.canvas.mpl_connect("draw_event", self._on_draw)
+
+    def _on_draw(self, event):
+        canvas = self.fig.canvas
+        # a savefig draws with its own renderer and dpi: that picture is not the background
+        if self._saving or not hasattr(canvas, "copy_from_bbox"):
+            return
+        if getattr(event, "renderer", None) is canvas.get_renderer():
+            self.background = canvas.copy_from_bbox(self.fig.bbox)
+            self._draw_artists()
+
+    def _draw_artists(self):
+        polys = [a for a in self.artists if hasattr(a, "do_3d_projection")]
+        others = [a for a in self.artists if not hasattr(a, "do_3d_projection")]
+        depth = {id(a): a.do_3d_projection() for a in polys}
+        for artist in sorted(polys, key=lambda a: depth[id(a)], reverse=True) + others:
+            artist.axes.draw_artist(artist)
+
+    def update(self):
+        """Show the artists' new state: blit if a background is ready, else a full redraw."""
+        canvas = self.fig.canvas
+        if self.background is None:
+            canvas.draw_idle()
+            return
+        canvas.restore_region(self.background)
+        self._draw_artists()
+        canvas.blit(self.fig.bbox)
+
+    def forget_background(self):
+        """After a change to a static artist: the next update redraws the whole figure."""
+        self.background = None
+
+    def savefig(self, *args, **kwargs):
+        """``fig.savefig`` with the moving artists included (animated artists are skipped
+        by a plain savefig)."""
+        self._saving = True
+        for artist in self.artists:
+            artist.set_animated(False)
+        try:
+            self.fig.savefig(*args, **kwargs)
+        finally:
+            for artist in self.artists:
+                artist.set_animated(True)
+            self._saving = False

@@ -1,0 +1,291 @@
+"""Make ``exercises/`` from ``solutions/``, and re-execute the course's notebooks.
+
+``solutions/chNN_topic.ipynb`` is the single source of a chapter's exercises. In its code cells
+the worked answer sits between the lines ``### BEGIN SOLUTION`` and ``### END SOLUTION``
+(nbgrader's convention); in Markdown cells between ``<!-- BEGIN SOLUTION -->`` and
+``<!-- END SOLUTION -->`` (HTML comments, invisible when the solution notebook is read). A cell
+tagged ``solution`` is dropped whole. The builder replaces each code region by a placeholder
+that keeps the notebook running: every name the region assigns and the rest of the cell uses
+becomes ``name = ...``, which the checkers report as "not answered yet".
+
+The generated notebook is then executed, so ``exercises/`` is stored with the outputs a student
+sees before answering (the questions and the "not answered yet" notes): it reads well on GitHub
+and nbval can compare it. Never edit ``exercises/`` by hand; run ``make exercises``.
+
+Command line::
+
+    python -m course_lib.exercises.build              # rebuild and execute exercises/
+    python -m course_lib.exercises.build --check      # exit 1 if exercises/ is stale
+    python -m course_lib.exercises.build --execute    # also re-execute notebooks/ and solutions/
+"""
+import argparse
+import ast
+import copy
+import re
+import sys
+from pathlib import Path
+
+import nbformat
+
+__all__ = ["build_exercise_notebook", "stale_exercises", "strip_code", "strip_markdown"]
+
+ROOT = Path(__file__).resolve().parents[2]
+CODE_BEGIN, CODE_END = "### BEGIN SOLUTION", "### END SOLUTION"
+MD_BEGIN, MD_END = "<!-- BEGIN SOLUTION -->", "<!-- END SOLUTION -->"
+MD_PLACEHOLDER = "*Your answer here.*"
+SOLUTION_TAG = "solution"
+
+
+class SolutionMarkerError(ValueError):
+    """A solution region is not closed, or closed without being opened."""
+
+
+def _regions(lines, begin, end, where):
+    """Yield (start, stop) line indices of each region, markers included."""
+    start = None
+    for i, line in enumerate(lines):
+        text = line.strip()
+        if text == begin:
+            if start is not None:
+                raise SolutionMarkerError(f"{where}: line {i + 1} opens a solution region "
+                                          f"inside another one (opened at line {start + 1})")
+            start = i
+        elif text == end:
+            if start is None:
+                raise SolutionMarkerError(f"{where}: line {i + 1} closes a solution region "
+                                          "that was never opened")
+            yield start, i
+            start = None
+    if start is not None:
+        raise SolutionMarkerError(f"{where}: the solution region opened at line {start + 1} "
+                                  f"is never closed with {end!r}")
+
+
+def _assigned_names(code):
+    """Names bound at the top level of `code`, in order of first assignment."""
+    names = []
+    try:
+        tree = ast.parse(code)
+    except SyntaxError:
+        return names
+    for node in tree.body:
+        targets = []
+        if isinstance(node, ast.Assign):
+            targets = node.targets
+        elif isinstance(node, (ast.AnnAssign, ast.AugAssign)):
+            targets = [node.target]
+        for target in targets:
+            for sub in ast.walk(target):
+                if isinstance(sub, ast.Name) and sub.id not in names:
+                    names.append(sub.id)
+    return names
+
+
+def _used_names(code):
+    try:
+        tree = ast.parse(code)
+    except SyntaxError:
+        return set(re.findall(r"[A-Za-z_]\w*", code))
+    return {node.id for node in ast.walk(tree) if isinstance(node, ast.Name)}
+
+
+def strip_code(source, where="cell"):
+    """Replace each solution region of a code cell by a placeholder.
+
+    Examples
+    --------
+    >>> src = "### BEGIN SOLUTION\\nt = 2\\nanswer = t * 3\\n### END SOLUTION\\nex.check(answer)"
+    >>> print(strip_code(src))
+    # YOUR ANSWER HERE
+    answer = ...
+    ex.check(answer)
+    """
+    lines = source.split("\n")
+    regions = list(_regions(lines, CODE_BEGIN, CODE_END, where))
+    for start, stop in reversed(regions):
+        indent = lines[start][: len(lines[start]) - len(lines[start].lstrip())]
+        body = "\n".join(line[len(indent):] if line.startswith(indent) else line
+                         for line in lines[start + 1:stop])
+        after = "\n".join(lines[stop + 1:])
+        assigned = _assigned_names(body)
+        used_after = _used_names(after)
+        wanted = [name for name in assigned if name in used_after]
+        placeholder = [indent + "# YOUR ANSWER HERE"]
+        placeholder += [f"{indent}{name} = ..." for name in wanted]
+        lines[start:stop + 1] = placeholder
+    return "\n".join(lines)
+
+
+def strip_markdown(source, where="cell"):
+    """Replace each solution region of a Markdown cell by a placeholder line.
+
+    Examples
+    --------
+    >>> print(strip_markdown("Why?\\n<!-- BEGIN SOLUTION -->\\nBecause.\\n<!-- END SOLUTION -->"))
+    Why?
+    *Your answer here.*
+    """
+    lines = source.split("\n")
+    for start, stop in reversed(list(_regions(lines, MD_BEGIN, MD_END, where))):
+        lines[start:stop + 1] = [MD_PLACEHOLDER]
+    return "\n".join(lines)
+
+
+def build_exercise_notebook(solution_nb, source_name):
+    """The exercise notebook made from a solution notebook (not executed).
+
+    Parameters
+    ----------
+    solution_nb : nbformat.NotebookNode
+    source_name : str
+        The solution notebook's path relative to the repository, recorded in the metadata.
+
+    Returns
+    -------
+    nbformat.NotebookNode
+
+    Examples
+    --------
+    >>> from nbformat.v4 import new_code_cell, new_notebook
+    >>> sol = new_notebook(cells=[new_code_cell("### BEGIN SOLUTION\\nx = 1\\n### END SOLUTION\\n"
+    ...                                         "ex.check(x)", execution_count=1)])
+    >>> ex = build_exercise_notebook(sol, "solutions/demo.ipynb")
+    >>> print(ex.cells[0].source)
+    # YOUR ANSWER HERE
+    x = ...
+    ex.check(x)
+    >>> ex.cells[0].execution_count is None, ex.metadata["course"]["generated_from"]
+    (True, 'solutions/demo.ipynb')
+    """
+    nb = copy.deepcopy(solution_nb)
+    cells = []
+    for index, cell in enumerate(nb.cells):
+        if SOLUTION_TAG in cell.get("metadata", {}).get("tags", []):
+            continue
+        where = f"{source_name}, cell {index}"
+        if cell.cell_type == "code":
+            cell.source = strip_code(cell.source, where)
+            cell.outputs = []
+            cell.execution_count = None
+        elif cell.cell_type == "markdown":
+            cell.source = strip_markdown(cell.source, where)
+        cell.metadata.pop("execution", None)
+        cells.append(cell)
+    nb.cells = cells
+    nb.metadata.pop("widgets", None)
+    nb.metadata["course"] = {"generated_from": source_name,
+                             "note": "generated by `make exercises`; edit the solution notebook"}
+    return nb
+
+
+def execute(nb, cwd, timeout=600):
+    """Execute `nb` in a fresh kernel in directory `cwd` and return it with its outputs.
+
+    No timing metadata and no widget state are stored, so that re-running gives the same file.
+    """
+    from nbclient import NotebookClient
+
+    client = NotebookClient(nb, timeout=timeout, kernel_name="python3",
+                            resources={"metadata": {"path": str(cwd)}},
+                            record_timing=False, store_widget_state=False)
+    client.execute()
+    nb.metadata.pop("widgets", None)
+    return nb
+
+
+def solution_notebooks(root=ROOT):
+    """The solution notebooks, sorted."""
+    return sorted((Path(root) / "solutions").glob("*.ipynb"))
+
+
+def exercise_path(solution_path, root=ROOT):
+    """Where the exercise notebook made from `solution_path` lives."""
+    return Path(root) / "exercises" / Path(solution_path).name
+
+
+def stale_exercises(root=ROOT):
+    """Exercise notebooks missing or whose cells differ from a fresh build (outputs ignored).
+
+    Returns
+    -------
+    list of str
+        One line per problem; empty when ``exercises/`` is up to date.
+
+    Examples
+    --------
+    >>> import tempfile, nbformat
+    >>> from nbformat.v4 import new_notebook
+    >>> root = Path(tempfile.mkdtemp())
+    >>> (root / "solutions").mkdir(); (root / "exercises").mkdir()
+    >>> nbformat.write(new_notebook(), root / "solutions" / "ch99.ipynb")
+    >>> stale_exercises(root)
+    ['exercises/ch99.ipynb is missing (made from solutions/ch99.ipynb)']
+    """
+    problems = []
+    expected_names = set()
+    for path in solution_notebooks(root):
+        target = exercise_path(path, root)
+        expected_names.add(target.name)
+        rel = path.relative_to(root).as_posix()
+        if not target.exists():
+            problems.append(f"{target.relative_to(root)} is missing (made from {rel})")
+            continue
+        built = build_exercise_notebook(nbformat.read(path, as_version=4), rel)
+        stored = nbformat.read(target, as_version=4)
+        want = [(c.cell_type, c.source) for c in built.cells]
+        have = [(c.cell_type, c.source) for c in stored.cells]
+        if want != have:
+            problems.append(f"{target.relative_to(root)} differs from a build of {rel}")
+        elif stored.metadata.get("course") != built.metadata["course"]:
+            problems.append(f"{target.relative_to(root)} lacks the generated-from metadata")
+    for target in sorted((Path(root) / "exercises").glob("*.ipynb")):
+        if target.name not in expected_names:
+            problems.append(f"{target.relative_to(root)} has no solution notebook")
+    return problems
+
+
+def build_all(root=ROOT, run=True, log=print):
+    """Rebuild every exercise notebook from its solution notebook (and execute it)."""
+    for path in solution_notebooks(root):
+        rel = path.relative_to(root).as_posix()
+        nb = build_exercise_notebook(nbformat.read(path, as_version=4), rel)
+        target = exercise_path(path, root)
+        target.parent.mkdir(exist_ok=True)
+        if run:
+            nb = execute(nb, target.parent)
+        nbformat.write(nb, target)
+        log(f"wrote {target.relative_to(root)}")
+
+
+def execute_in_place(paths, log=print):
+    """Re-execute notebooks and store their outputs."""
+    for path in paths:
+        nb = execute(nbformat.read(path, as_version=4), Path(path).parent)
+        nbformat.write(nb, path)
+        log(f"executed {Path(path).relative_to(ROOT) if ROOT in Path(path).parents else path}")
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--check", action="store_true",
+                        help="only report whether exercises/ is stale (exit status 1 if so)")
+    parser.add_argument("--execute", action="store_true",
+                        help="also re-execute notebooks/ and solutions/ in place")
+    parser.add_argument("notebooks", nargs="*",
+                        help="with --execute: only these notebooks (default: all)")
+    args = parser.parse_args(argv)
+    if args.check:
+        problems = stale_exercises()
+        for line in problems:
+            print(line)
+        return 1 if problems else 0
+    if args.execute:
+        paths = [Path(p).resolve() for p in args.notebooks] or (
+            sorted((ROOT / "notebooks").glob("*.ipynb")) + solution_notebooks())
+        execute_in_place([p for p in paths if p.parent.name != "exercises"])
+    build_all()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

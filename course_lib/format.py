@@ -1,0 +1,116 @@
+"""Numbers, vectors and matrices as LaTeX or plain text, for notebooks, widgets and exercises.
+
+Only formatting: numpy in, strings out. Entries are rounded for reading (``-0`` shown as ``0``).
+"""
+import numpy as np
+
+from ._validate import as_array
+
+__all__ = ["number", "matrix_latex", "matrix_text", "vector_latex"]
+
+
+def number(x, decimals=3):
+    """A number rounded to `decimals` places, without trailing zeros and without ``-0``.
+
+    Parameters
+    ----------
+    x : float
+    decimals : int, optional
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> number(0.5), number(-1e-17), number(2.0), number(1 / 3)
+    ('0.5', '0', '2', '0.333')
+    """
+    value = round(float(x), decimals)
+    if value == 0:
+        value = 0.0
+    text = f"{value:.{decimals}f}".rstrip("0").rstrip(".") if decimals > 0 else f"{value:.0f}"
+    return text if text not in ("", "-") else "0"
+
+
+def _entries(m, decimals):
+    return [[number(v, decimals) for v in row] for row in m]
+
+
+def matrix_latex(M, decimals=3):
+    r"""A matrix as a LaTeX ``bmatrix``, entries rounded to `decimals` places.
+
+    Parameters
+    ----------
+    M : array_like, shape (rows, cols)
+    decimals : int, optional
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> matrix_latex([[1, 0.5], [0, 1]])
+    '\\begin{bmatrix} 1 & 0.5 \\\\ 0 & 1 \\end{bmatrix}'
+    """
+    m = np.atleast_2d(as_array(M, "M"))
+    rows = [" & ".join(row) for row in _entries(m, decimals)]
+    return r"\begin{bmatrix} " + r" \\ ".join(rows) + r" \end{bmatrix}"
+
+
+def vector_latex(v, decimals=3, column=False):
+    r"""A vector as LaTeX: a row ``(x, y, z)``, or a column ``bmatrix`` with ``column=True``.
+
+    Parameters
+    ----------
+    v : array_like, shape (n,)
+    decimals : int, optional
+    column : bool, optional
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> vector_latex([1, 0.25, -2])
+    '(1,\\ 0.25,\\ -2)'
+    """
+    v = as_array(v, "v").ravel()
+    if column:
+        return matrix_latex(v[:, None], decimals)
+    return "(" + r",\ ".join(number(x, decimals) for x in v) + ")"
+
+
+def matrix_text(M, decimals=3):
+    """A matrix as aligned plain text, one row per line, for ``<pre>`` blocks and terminals.
+
+    Parameters
+    ----------
+    M : array_like, shape (rows, cols)
+    decimals : int, optional
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> print(matrix_text([[1, -0.5], [0, 10]]))
+    [  1  -0.5 ]
+    [  0  10   ]
+    """
+    m = np.atleast_2d(as_array(M, "M"))
+    cells = [[text.partition(".") for text in row] for row in _entries(m, decimals)]
+    # align each column on the decimal point: whole part right-aligned, fraction left-aligned
+    whole_width = [max(len(row[j][0]) for row in cells) for j in range(m.shape[1])]
+    frac_width = [max(len(row[j][2]) for row in cells) for j in range(m.shape[1])]
+    lines = []
+    for row in cells:
+        parts = []
+        for j, (whole, _, frac) in enumerate(row):
+            dot = "." if frac else (" " if frac_width[j] else "")
+            parts.append(whole.rjust(whole_width[j]) + dot + frac.ljust(frac_width[j]))
+        lines.append("[ " + "  ".join(f" {p}" for p in parts) + " ]")
+    return "\n".join(lines)

@@ -1,0 +1,22 @@
+"""Test-wide set-up: headless rendering and a matplotlib backend like the students'."""
+import os
+
+import matplotlib
+import pytest
+
+from course_lib.draw import configure_offscreen_vtk
+
+# The ipympl backend, as under `%matplotlib widget`: it works without a browser, and setting a
+# widget's value runs the same callbacks a student's drag runs.
+matplotlib.use("module://ipympl.backend_nbagg")
+configure_offscreen_vtk()            # before anything imports vtk (also inherited by kernels)
+os.environ.setdefault("PYDEVD_DISABLE_FILE_VALIDATION", "1")   # quiet kernel start-up
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    """Each test starts and ends without open figures (widgets make one each)."""
+    yield
+    import matplotlib.pyplot as plt
+
+    plt.close("all")

@@ -1,0 +1,132 @@
+"""The project's own promises: one environment in two files, notebooks stored executed and
+without widget state, exercises/ generated from solutions/, documented public API, layers."""
+import ast
+import importlib
+import inspect
+import json
+import re
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+NOTEBOOK_DIRS = ("notebooks", "solutions", "exercises")
+ALGORITHM_MODULES = ("course_lib.transforms", "course_lib.quaternions", "course_lib.format",
+                     "course_lib.shapes", "course_lib._validate", "course_lib.exercises.core")
+DOCUMENTED_MODULES = ALGORITHM_MODULES + ("course_lib.draw", "course_lib.exercises.build")
+
+
+def all_notebooks():
+    return sorted(p for d in NOTEBOOK_DIRS for p in (ROOT / d).glob("*.ipynb"))
+
+
+def _requirement(text):
+    match = re.fullmatch(r"\s*([A-Za-z0-9_.\-]+)\s*(.*?)\s*", text)
+    return match.group(1).lower().replace("_", "-"), match.group(2).replace(" ", "")
+
+
+def test_environment_yml_lists_the_same_packages_as_pyproject():
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    wanted = dict(_requirement(r) for r in project["dependencies"])
+    wanted.update(_requirement(r) for r in project["optional-dependencies"]["test"])
+    env = yaml.safe_load((ROOT / "environment.yml").read_text())
+    conda = [d for d in env["dependencies"] if isinstance(d, str)]
+    have = dict(_requirement(d.replace("=", "==", 1) if re.fullmatch(r"[\w\-]+=[\d.]+", d)
+                             else d) for d in conda)
+    python = have.pop("python", None)
+    have.pop("pip", None)
+    pip_section = [d for d in env["dependencies"] if isinstance(d, dict)]
+    assert not pip_section, "environment.yml: keep every package in the conda list"
+    assert have == wanted, (
+        "environment.yml and pyproject.toml disagree:\n"
+        f"  only in environment.yml: {sorted(set(have.items()) - set(wanted.items()))}\n"
+        f"  only in pyproject.toml:  {sorted(set(wanted.items()) - set(have.items()))}")
+    minimum = project["requires-python"].removeprefix(">=")
+    assert python is not None and python.lstrip("=") >= minimum
+
+
+@pytest.mark.parametrize("path", all_notebooks(), ids=lambda p: str(p.relative_to(ROOT)))
+def test_notebook_is_stored_executed_without_widget_state(path):
+    nb = json.loads(path.read_text())
+    assert "widgets" not in nb["metadata"], (
+        f"{path.name} stores widget state (application/vnd.jupyter.widget-state+json): "
+        "clear it (Edit > Clear widget state, or re-run `make notebooks`)")
+    assert "application/vnd.jupyter.widget-state+json" not in path.read_text()
+    counts = [c.get("execution_count") for c in nb["cells"] if c["cell_type"] == "code"]
+    assert counts == list(range(1, len(counts) + 1)), (
+        f"{path.name} was not executed top to bottom in one run: execution counts {counts}; "
+        "re-run `make notebooks`")
+    for k, cell in enumerate(nb["cells"]):
+        for out in cell.get("outputs", []):
+            assert out["output_type"] != "error", f"{path.name} cell {k} stored an error"
+            assert out.get("name") != "stderr", f"{path.name} cell {k} wrote to stderr"
+
+
+def test_every_solution_notebook_has_an_up_to_date_exercise_notebook():
+    from course_lib.exercises.build import stale_exercises
+
+    assert list((ROOT / "solutions").glob("*.ipynb")), "no solution notebooks found"
+    assert stale_exercises(ROOT) == [], "exercises/ is stale: run `make exercises`"
+
+
+def _public_objects(module):
+    names = getattr(module, "__all__", None)
+    assert names, f"{module.__name__} must declare __all__ (its public API)"
+    for name in names:
+        obj = getattr(module, name)
+        if inspect.isfunction(obj) or inspect.isclass(obj):
+            yield name, obj
+
+
+@pytest.mark.parametrize("module_name", DOCUMENTED_MODULES)
+def test_public_functions_have_numpydoc_docstrings_with_a_doctest(module_name):
+    module = importlib.import_module(module_name)
+    missing = []
+    for name, obj in _public_objects(module):
+        doc = inspect.getdoc(obj) or ""
+        if "Examples" not in doc or ">>>" not in doc:
+            missing.append(name)
+    assert not missing, f"{module_name}: no Examples section with a doctest in {missing}"
+
+
+def test_algorithm_modules_do_not_import_drawing_libraries():
+    code = ("import sys\n"
+            + "".join(f"import {m}\n" for m in ALGORITHM_MODULES)
+            + "import course_lib.exercises.ch03\n"
+            + "print(sorted(m for m in ('matplotlib', 'ipywidgets', 'pyvista', 'vtk') "
+              "if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True, cwd=ROOT)
+    assert out.stdout.strip() == "[]", f"an algorithm module pulls in {out.stdout.strip()}"
+
+
+def test_readme_starts_with_the_two_commands():
+    readme = (ROOT / "README.md").read_text()
+    first_block = re.search(r"```(?:\w+)?\n(.*?)```", readme, re.S).group(1)
+    commands = [line.strip() for line in first_block.splitlines()
+                if line.strip() and not line.strip().startswith("#")]
+    assert commands == ["make lab", "make test"]
+
+
+def test_ci_runs_the_readme_test_command_and_nothing_else():
+    script = (ROOT / ".ci" / "run").read_text()
+    commands = [line for line in script.splitlines() if line.strip().startswith("exec ")]
+    assert commands == ["exec make test"]
+
+
+def test_solution_code_regions_parse():
+    """Solution cells stay valid Python once the builder puts placeholders in."""
+    from course_lib.exercises.build import build_exercise_notebook
+    import nbformat
+
+    for path in sorted((ROOT / "solutions").glob("*.ipynb")):
+        nb = build_exercise_notebook(nbformat.read(path, as_version=4), path.name)
+        for cell in nb.cells:
+            if cell.cell_type == "code":
+                source = "\n".join(line for line in cell.source.splitlines()
+                                   if not line.lstrip().startswith(("%", "!")))
+                ast.parse(source)
