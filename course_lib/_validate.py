@@ -10,6 +10,7 @@ import numpy as np
 
 __all__ = [
     "as_array",
+    "broadcast_stacks",
     "as_matrix",
     "as_points",
     "as_quaternions",
@@ -211,6 +212,34 @@ def as_rotation_matrix(value, name, atol=1e-6):
                       "a rotation is orthonormal with determinant +1")
         raise ValueError(f"{name} is not a rotation{where}: {reason}")
     return m
+
+
+def broadcast_stacks(**stacks):
+    """The common shape of the leading axes of several stacks, or a ValueError naming them.
+
+    Each keyword is ``name=(array, trailing)``: the array and how many of its last axes are one
+    item (1 for vectors and quaternions, 0 for scalars such as angles).
+
+    Examples
+    --------
+    >>> broadcast_stacks(q=(np.ones((5, 4)), 1), points=(np.ones((5, 3)), 1))
+    (5,)
+    >>> broadcast_stacks(q=(np.ones((3, 4)), 1), points=(np.ones((2, 3)), 1))
+    Traceback (most recent call last):
+    ...
+    ValueError: q holds a stack of shape (3,) and points one of shape (2,): they must be equal, or one of them a single item
+    """
+    leading = {name: np.shape(a)[:np.ndim(a) - trailing] for name, (a, trailing) in stacks.items()}
+    names = list(leading)
+    for i, first in enumerate(names):
+        for second in names[i + 1:]:
+            try:
+                np.broadcast_shapes(leading[first], leading[second])
+            except ValueError:
+                raise ValueError(f"{first} holds a stack of shape {leading[first]} and {second} "
+                                 f"one of shape {leading[second]}: they must be equal, or one of "
+                                 "them a single item") from None
+    return np.broadcast_shapes(*leading.values())
 
 
 def _or(items):

@@ -13,7 +13,8 @@ point :math:`p` by the angle :math:`\theta` about the axis :math:`\hat n` throug
 """
 import numpy as np
 
-from ._validate import as_array, as_points, as_quaternions, as_rotation_matrix, as_scalar
+from ._validate import (as_array, as_points, as_quaternions, as_rotation_matrix,
+                        broadcast_stacks)
 
 __all__ = [
     "angle_between",
@@ -85,6 +86,7 @@ def from_axis_angle(axis, angle):
     """
     axis = as_points(axis, "axis", dims=3)
     angle = as_array(angle, "angle")
+    broadcast_stacks(axis=(axis, 1), angle=(angle, 0))
     length = np.linalg.norm(axis, axis=-1)
     if np.any(length < 1e-12):
         raise ValueError("axis must not be the zero vector: it has no direction")
@@ -159,6 +161,7 @@ def multiply(q1, q2):
     """
     a = as_quaternions(q1, "q1", nonzero=False)
     b = as_quaternions(q2, "q2", nonzero=False)
+    broadcast_stacks(q1=(a, 1), q2=(b, 1))
     s1, x1, y1, z1 = np.moveaxis(a, -1, 0)
     s2, x2, y2, z2 = np.moveaxis(b, -1, 0)
     return np.stack([
@@ -206,7 +209,9 @@ def norm(q):
     2.0
     """
     q = as_quaternions(q, "q", nonzero=False)
-    return np.sqrt(_dot(q, q))
+    peak = np.abs(q).max(axis=-1)
+    scaled = q / np.where(peak > 0, peak, 1.0)[..., None]
+    return peak * np.sqrt(_dot(scaled, scaled))
 
 
 def normalize(q):
@@ -231,7 +236,12 @@ def normalize(q):
     >>> normalize([0, 0, 3, 4])
     array([0. , 0. , 0.6, 0.8])
     """
-    q = as_quaternions(q, "q")
+    return _unit(as_quaternions(q, "q"))
+
+
+def _unit(q):
+    """q / |q|, scaled first by its largest component so that squaring cannot overflow."""
+    q = q / np.abs(q).max(axis=-1, keepdims=True)
     return q / np.sqrt(_dot(q, q))[..., None]
 
 
@@ -263,7 +273,7 @@ def inverse(q):
     array([1., 0., 0., 0.])
     """
     q = as_quaternions(q, "q")
-    return conjugate(q) / _dot(q, q)[..., None]
+    return conjugate(_unit(q)) / norm(q)[..., None]
 
 
 def rotate(q, points):
@@ -295,6 +305,7 @@ def rotate(q, points):
     """
     q = normalize(q)
     p = as_points(points, "points", dims=3)
+    broadcast_stacks(q=(q, 1), points=(p, 1))
     pure = np.concatenate([np.zeros(p.shape[:-1] + (1,)), p], axis=-1)
     return multiply(multiply(q, pure), conjugate(q))[..., 1:]
 
@@ -344,10 +355,15 @@ def to_matrix(q, homogeneous=False):
     for lo in range(0, count, _BLOCK):
         s, x, y, z = planar[:, lo:lo + _BLOCK]
         o = out[..., lo:lo + _BLOCK]
-        norm2 = s * s + x * x + y * y + z * z
-        if np.any(norm2 < 1e-24):
-            raise ValueError("q must not be the zero quaternion: it has no inverse and "
-                             "represents no rotation")
+        with np.errstate(over="ignore"):
+            norm2 = s * s + x * x + y * y + z * z
+        if not np.all((norm2 >= 1e-24) & (norm2 < 1e300)):
+            if np.any(norm2 < 1e-24):
+                raise ValueError("q must not be the zero quaternion: it has no inverse and "
+                                 "represents no rotation")
+            # huge components: squaring them overflowed; rescale this block and start again
+            s, x, y, z = planar[:, lo:lo + _BLOCK] / np.abs(planar[:, lo:lo + _BLOCK]).max(0)
+            norm2 = s * s + x * x + y * y + z * z
         k = 2.0 / norm2
         xk, yk, zk = x * k, y * k, z * k
         xx, yy, zz = x * xk, y * yk, z * zk
@@ -460,6 +476,7 @@ def angle_between(q0, q1):
     (0.5, 0.0)
     """
     a, b = normalize(q0), normalize(q1)
+    broadcast_stacks(q0=(a, 1), q1=(b, 1))
     b = np.where((_dot(a, b) < 0)[..., None], -b, b)
     # arccos|a.b| is the angle between the two 4D unit vectors; 2 atan2(|a - b|, |a + b|) is the
     # same angle but stays accurate when it is tiny, where arccos of a number near 1 loses digits
@@ -505,6 +522,7 @@ def slerp(q0, q1, t, shortest=True):
     a = normalize(q0)
     b = normalize(q1)
     t = as_array(t, "t")
+    broadcast_stacks(q0=(a, 1), q1=(b, 1), t=(t, 0))
     d = _dot(a, b)
     if shortest:
         b = np.where((d < 0)[..., None], -b, b)
@@ -557,7 +575,9 @@ def nlerp(q0, q1, t, shortest=True):
     """
     a = normalize(q0)
     b = normalize(q1)
-    t = as_array(t, "t")[..., None]
+    t = as_array(t, "t")
+    broadcast_stacks(q0=(a, 1), q1=(b, 1), t=(t, 0))
+    t = t[..., None]
     if shortest:
         b = np.where((_dot(a, b) < 0)[..., None], -b, b)
     q = (1.0 - t) * a + t * b

@@ -653,13 +653,12 @@ def inverse(M):
     """
     m = as_matrix(M, "M")
     n = m.shape[0] - 1
-    affine = np.allclose(m[n, :n], 0.0) and np.isclose(m[n, n], 1.0)
+    # affine only if the last row is exactly (0, ..., 0, 1): a nearly affine matrix is projective
+    affine = bool(np.all(m[n, :n] == 0.0) and m[n, n] == 1.0)
     block = m[:n, :n] if affine else m
-    scale_ref = max(np.abs(block).max(), 1e-300) ** block.shape[0]
-    det = np.linalg.det(block)
-    if abs(det) <= 1e-12 * scale_ref:
-        raise ValueError(f"M is singular (determinant {0 if abs(det) < 1e-300 else det:.3g}): it "
-                         "flattens space, e.g. a scale factor of 0, and cannot be inverted")
+    if np.linalg.matrix_rank(block) < block.shape[0]:
+        raise ValueError("M is singular (determinant 0): it flattens space, e.g. a scale factor "
+                         "of 0, and cannot be inverted")
     if not affine:
         return np.linalg.inv(m)
     a_inv = np.linalg.inv(block)
