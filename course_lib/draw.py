@@ -80,6 +80,12 @@ def figure(figsize=(4.5, 4.5), dpi=90, **kwargs):
                         ("toolbar_position", "left"), ("resizable", False)):
         if hasattr(canvas, name):
             setattr(canvas, name, value)
+    if hasattr(canvas, "syncing_data_url"):
+        # ipympl 0.10 keeps a copy of each frame in the widget state until the browser says it
+        # is ready, but stores it without the "data:image/png;base64," prefix: a frame drawn in
+        # that window reaches the browser as a broken image (a console error). The explorers
+        # carry their own picture for readers without a kernel, so the copy is not needed.
+        canvas.syncing_data_url = False
     return fig
 
 

@@ -177,3 +177,19 @@ def test_stale_exercises_notices_edits(tmp_path):
         "exercises/ch01.ipynb differs from a build of solutions/ch01.ipynb"]
     nbformat.write(new_notebook(), tmp_path / "exercises" / "orphan.ipynb")
     assert "exercises/orphan.ipynb has no solution notebook" in build.stale_exercises(tmp_path)
+
+
+def test_sign_free_answers_recognise_negated_mistakes():
+    """-q is the same rotation as q, so a mistake's negative is the same mistake."""
+    expected = np.array([0.5, 0.5, 0.5, 0.5])
+    conjugate = expected * [1, -1, -1, -1]
+    mistake = Mistake(conjugate, "That is the conjugate.", "conjugate")
+    for answer in (conjugate, -conjugate):
+        feedback = diagnose_vector(answer, expected, mistakes=[mistake], sign_free=True)
+        assert (feedback.status, feedback.diagnosis) == ("wrong", "conjugate")
+    assert diagnose_vector(-expected, expected, mistakes=[mistake], sign_free=True).status == \
+        "correct"
+
+
+def test_feedback_keeps_the_case_of_the_answer_name():
+    assert diagnose_matrix(M, M, what="the matrix M").message == "The matrix M is right."

@@ -17,6 +17,8 @@ Command line::
     python -m course_lib.exercises.build              # rebuild and execute exercises/
     python -m course_lib.exercises.build --check      # exit 1 if exercises/ is stale
     python -m course_lib.exercises.build --execute    # also re-execute notebooks/ and solutions/
+    python -m course_lib.exercises.build --execute solutions/ch03_transformations.ipynb
+                                                      # one notebook (and its exercises)
 """
 import argparse
 import ast
@@ -244,9 +246,13 @@ def stale_exercises(root=ROOT):
     return problems
 
 
-def build_all(root=ROOT, run=True, log=print):
-    """Rebuild every exercise notebook from its solution notebook (and execute it)."""
-    for path in solution_notebooks(root):
+def build_all(root=ROOT, run=True, log=print, only=None):
+    """Rebuild exercise notebooks from their solution notebooks (and execute them).
+
+    `only` restricts the build to these solution notebooks (default: all of them).
+    """
+    for path in (solution_notebooks(root) if only is None else only):
+        path = Path(path).resolve()
         rel = path.relative_to(root).as_posix()
         nb = build_exercise_notebook(nbformat.read(path, as_version=4), rel)
         target = exercise_path(path, root)
@@ -279,11 +285,12 @@ def main(argv=None):
         for line in problems:
             print(line)
         return 1 if problems else 0
+    named = [Path(p).resolve() for p in args.notebooks]
     if args.execute:
-        paths = [Path(p).resolve() for p in args.notebooks] or (
-            sorted((ROOT / "notebooks").glob("*.ipynb")) + solution_notebooks())
+        paths = named or sorted((ROOT / "notebooks").glob("*.ipynb")) + solution_notebooks()
         execute_in_place([p for p in paths if p.parent.name != "exercises"])
-    build_all()
+    # named notebooks: rebuild only the exercises made from the named solution notebooks
+    build_all(only=[p for p in named if p.parent.name == "solutions"] if named else None)
     return 0
 
 

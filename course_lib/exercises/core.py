@@ -132,15 +132,25 @@ def _read(answer, what):
     return value
 
 
+def _cap(text):
+    """`text` with its first letter upper-cased (str.capitalize would lower-case the rest)."""
+    return text[:1].upper() + text[1:]
+
+
 def _close(a, b, atol):
     a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
     return a.shape == b.shape and bool(np.allclose(a, b, rtol=1e-3, atol=atol))
 
 
-def _anticipated(value, mistakes, atol, expected):
+def _anticipated(value, mistakes, atol, expected, sign_free=False):
+    """The first anticipated mistake `value` matches (or its negative, when `sign_free`)."""
+    signs = (1.0, -1.0) if sign_free else (1.0,)
     for mistake in mistakes:
-        if _close(value, mistake.value, atol) and not _close(mistake.value, expected, atol):
-            return Feedback("wrong", mistake.explanation, mistake.key)
+        for sign in signs:
+            wrong = sign * mistake.value
+            if _close(value, wrong, atol) and not _close(wrong, expected, atol) \
+                    and not (sign_free and _close(wrong, -expected, atol)):
+                return Feedback("wrong", mistake.explanation, mistake.key)
     return None
 
 
@@ -189,14 +199,14 @@ def diagnose_matrix(answer, expected, mistakes=(), atol=ATOL, what="the matrix",
         if value.ndim == 2 and value.shape == (n - 1, n - 1):
             hint = (f" You gave a {n - 1}x{n - 1} matrix; the question asks for the homogeneous "
                     f"{n}x{n} one (the extra row and column carry the translation).")
-        return Feedback("invalid", f"{what.capitalize()} should have shape {expected.shape}, "
+        return Feedback("invalid", f"{_cap(what)} should have shape {expected.shape}, "
                         f"yours has shape {value.shape}.{hint}", "wrong shape")
     if _close(value, expected, atol):
-        return Feedback("correct", f"{what.capitalize()} is right.")
+        return Feedback("correct", f"{_cap(what)} is right.")
     if homogeneous_scale:
         ratio = _common_ratio(value, expected)
         if ratio is not None and abs(ratio) > 1e-9:
-            return Feedback("correct", f"{what.capitalize()} is right: it is {fmt.number(ratio)} "
+            return Feedback("correct", f"{_cap(what)} is right: it is {fmt.number(ratio)} "
                             "times the reference matrix, and any non-zero multiple of a "
                             "projective matrix is the same transformation.")
     found = _anticipated(value, mistakes, atol, expected)
@@ -204,7 +214,7 @@ def diagnose_matrix(answer, expected, mistakes=(), atol=ATOL, what="the matrix",
         return found
     n = expected.shape[-1]
     if expected.ndim == 2 and expected.shape[0] == n and _close(value, expected.T, atol):
-        return Feedback("wrong", f"{what.capitalize()} is transposed: rows and columns are "
+        return Feedback("wrong", f"{_cap(what)} is transposed: rows and columns are "
                         "swapped. With column vectors ($p' = Mp$) the images of the axes are the "
                         "*columns*, and a translation sits in the last *column*.", "transposed")
     if expected.ndim == 2 and expected.shape[0] == n:
@@ -271,7 +281,8 @@ def diagnose_vector(answer, expected, mistakes=(), atol=ATOL, what="the vector",
     unit : bool
         The answer must have length 1.
     sign_free : bool
-        ``-expected`` is also right (a quaternion and its negative are the same rotation).
+        ``-expected`` is also right (a quaternion and its negative are the same rotation); the
+        negatives of the anticipated mistakes are recognised too.
 
     Returns
     -------
@@ -289,14 +300,14 @@ def diagnose_vector(answer, expected, mistakes=(), atol=ATOL, what="the vector",
     if isinstance(value, Feedback):
         return value
     if value.shape != expected.shape:
-        return Feedback("invalid", f"{what.capitalize()} should have {expected.size} "
+        return Feedback("invalid", f"{_cap(what)} should have {expected.size} "
                         f"components, yours has shape {value.shape}.", "wrong shape")
     if _close(value, expected, atol):
-        return Feedback("correct", f"{what.capitalize()} is right.")
+        return Feedback("correct", f"{_cap(what)} is right.")
     if sign_free and _close(value, -expected, atol):
-        return Feedback("correct", f"{what.capitalize()} is right (it is the negative of the "
+        return Feedback("correct", f"{_cap(what)} is right (it is the negative of the "
                         "reference answer, which represents the same thing).")
-    found = _anticipated(value, mistakes, atol, expected)
+    found = _anticipated(value, mistakes, atol, expected, sign_free)
     if found is not None:
         return found
     length = float(np.linalg.norm(value))
@@ -313,7 +324,7 @@ def diagnose_vector(answer, expected, mistakes=(), atol=ATOL, what="the vector",
             return Feedback("wrong", f"Right direction, but the length is {fmt.number(length)} "
                             f"instead of {fmt.number(target)}.", "wrong length")
     if _close(value, -expected, atol):
-        return Feedback("wrong", f"{what.capitalize()} points the opposite way: every "
+        return Feedback("wrong", f"{_cap(what)} points the opposite way: every "
                         "component has the wrong sign.", "opposite sign")
     off = [int(i) for i in np.flatnonzero(~np.isclose(value, expected, rtol=1e-3, atol=atol))]
     return Feedback("wrong", f"Components {off} (counted from 0) of {what} are off.",
@@ -350,12 +361,12 @@ def diagnose_number(answer, expected, mistakes=(), atol=ATOL, what="the number",
     if isinstance(value, Feedback):
         return value
     if value.size != 1:
-        return Feedback("invalid", f"{what.capitalize()} should be a single number, yours has "
+        return Feedback("invalid", f"{_cap(what)} should be a single number, yours has "
                         f"shape {value.shape}.", "wrong shape")
     value = float(value.ravel()[0])
     expected = float(expected)
     if math.isclose(value, expected, rel_tol=1e-3, abs_tol=atol):
-        return Feedback("correct", f"{what.capitalize()} is right.")
+        return Feedback("correct", f"{_cap(what)} is right.")
     found = _anticipated(np.asarray(value), mistakes, atol, np.asarray(expected))
     if found is not None:
         return found
@@ -366,11 +377,11 @@ def diagnose_number(answer, expected, mistakes=(), atol=ATOL, what="the number",
                             "degrees")
         turns = (value - expected) / (2 * math.pi)
         if abs(turns - round(turns)) < 1e-3 and round(turns) != 0:
-            return Feedback("correct", f"{what.capitalize()} is right up to a whole number of "
+            return Feedback("correct", f"{_cap(what)} is right up to a whole number of "
                             "turns, which is the same rotation.")
     if math.isclose(value, -expected, rel_tol=1e-3, abs_tol=atol):
         return Feedback("wrong", "Right size, wrong sign.", "opposite sign")
-    return Feedback("wrong", f"{what.capitalize()} should be different: yours is "
+    return Feedback("wrong", f"{_cap(what)} should be different: yours is "
                     f"{fmt.number(value, 4)}.", "value differs")
 
 

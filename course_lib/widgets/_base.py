@@ -36,9 +36,10 @@ class Explorer:
         return buffer.getvalue()
 
     def _repr_mimebundle_(self, include=None, exclude=None):
+        image = self.png()
+        encoded = base64.b64encode(image).decode("ascii") if image is not None else None
         bundle = dict(self.widget._repr_mimebundle_(include=include, exclude=exclude) or {})
         bundle["text/plain"] = self.summary
-        image = self.png()
-        if image is not None:
-            bundle["image/png"] = base64.b64encode(image).decode("ascii")
+        if encoded is not None:
+            bundle["image/png"] = encoded
         return bundle
