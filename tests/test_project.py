@@ -17,7 +17,10 @@ ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOK_DIRS = ("notebooks", "solutions", "exercises")
 ALGORITHM_MODULES = ("course_lib.transforms", "course_lib.quaternions", "course_lib.format",
                      "course_lib.shapes", "course_lib._validate", "course_lib.exercises.core")
-DOCUMENTED_MODULES = ALGORITHM_MODULES + ("course_lib.draw", "course_lib.exercises.build")
+DOCUMENTED_MODULES = ALGORITHM_MODULES + (
+    "course_lib.draw", "course_lib.exercises.build", "course_lib.exercises.ch03",
+    "course_lib.widgets._base", "course_lib.widgets.quaternion", "course_lib.widgets.slerp",
+    "course_lib.widgets.gimbal", "course_lib.widgets.composer")
 
 
 def all_notebooks():

@@ -3,6 +3,9 @@ import base64
 import io
 
 
+__all__ = ["Explorer"]
+
+
 class Explorer:
     """Base of the interactive explorers.
 
@@ -15,6 +18,13 @@ class Explorer:
     summary and a PNG of the figure in its current state, so that a notebook read without a
     kernel (GitHub, nbviewer, a PDF export) still shows the picture, and so that the stored text
     output does not depend on widget ids or versions.
+
+    Examples
+    --------
+    >>> from course_lib.widgets.gimbal import GimbalExplorer
+    >>> bundle = GimbalExplorer()._repr_mimebundle_()
+    >>> sorted(bundle)
+    ['application/vnd.jupyter.widget-view+json', 'image/png', 'text/plain']
     """
 
     #: One line said in place of the widget where it cannot be shown.
@@ -27,7 +37,14 @@ class Explorer:
         raise NotImplementedError
 
     def png(self, dpi=72):
-        """The figure in its current state as PNG bytes (None without a figure)."""
+        """The figure in its current state as PNG bytes (None without a figure).
+
+        Examples
+        --------
+        >>> from course_lib.widgets.quaternion import QuaternionExplorer
+        >>> QuaternionExplorer().png()[:4]
+        b'\\x89PNG'
+        """
         if self.fig is None:
             return None
         buffer = io.BytesIO()

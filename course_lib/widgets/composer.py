@@ -13,6 +13,8 @@ import numpy as np
 from .. import draw, format as fmt, shapes, transforms
 from ._base import Explorer
 
+__all__ = ["ComposerExplorer", "OPERATIONS", "Operation", "State", "scene"]
+
 MAX_OPERATIONS = 5
 SHAPE = shapes.letter_f()
 
@@ -50,7 +52,15 @@ OPERATIONS = {
 
 @dataclass
 class Operation:
-    """One step: its kind (a key of OPERATIONS) and its parameters."""
+    """One step: its kind (a key of OPERATIONS) and its parameters (defaults if omitted).
+
+    Examples
+    --------
+    >>> Operation("translate", (1, 2)).latex()
+    'T(1, 2)'
+    >>> Operation("rotate").params
+    (45.0,)
+    """
 
     kind: str
     params: tuple = None
@@ -66,11 +76,25 @@ class Operation:
                              f"got {len(self.params)}")
 
     def matrix(self):
-        """The operation's 3x3 homogeneous matrix."""
+        """The operation's 3x3 homogeneous matrix.
+
+        Examples
+        --------
+        >>> Operation("scale", (2, 3)).matrix()
+        array([[2., 0., 0.],
+               [0., 3., 0.],
+               [0., 0., 1.]])
+        """
         return OPERATIONS[self.kind][3](*self.params)
 
     def latex(self):
-        """The operation's name with its parameters, e.g. ``T(2, 0.5)``."""
+        """The operation's name with its parameters, e.g. ``T(2, 0.5)``.
+
+        Examples
+        --------
+        >>> Operation("shear x", (0.5,)).latex()
+        'SH_x(0.5)'
+        """
         return OPERATIONS[self.kind][4](*self.params)
 
 
@@ -80,7 +104,13 @@ def _default_operations():
 
 @dataclass
 class State:
-    """The list of operations, in the order they are listed, and the order toggle."""
+    """The list of operations, in the order they are listed, and the order toggle.
+
+    Examples
+    --------
+    >>> [op.kind for op in State().operations]
+    ['translate', 'rotate']
+    """
 
     operations: list = field(default_factory=_default_operations)
     reverse: bool = False
@@ -97,6 +127,16 @@ def scene(state):
         composed 3x3 matrix), ``other_matrix`` and ``other_result`` (the same operations in
         the other order), ``commute`` (whether both orders give the same matrix) and ``text``
         (the formula, HTML with LaTeX).
+
+    Examples
+    --------
+    >>> s = scene(State([Operation("translate", (1, 0)), Operation("rotate", (90,))]))
+    >>> s["matrix"].round(12) + 0.0              # R(90°) T(1, 0): the rotation acts last
+    array([[ 0., -1.,  0.],
+           [ 1.,  0.,  1.],
+           [ 0.,  0.,  1.]])
+    >>> s["commute"]
+    False
     """
     ops = list(reversed(state.operations)) if state.reverse else list(state.operations)
     matrices = [op.matrix() for op in ops]
@@ -178,11 +218,17 @@ class _Row:
 class ComposerExplorer(Explorer):
     """A list of 2D operations with sliders, the F after each step and the composed matrix.
 
+    In a notebook, after ``%matplotlib widget``, end a cell with ``ComposerExplorer()``.
+
     Examples
     --------
-    In a notebook, after ``%matplotlib widget``::
-
-        ComposerExplorer()
+    >>> explorer = ComposerExplorer()
+    >>> explorer.add("scale", (2, 2))       # what the "add operation" button does
+    >>> [op.kind for op in explorer.state.operations]
+    ['translate', 'rotate', 'scale']
+    >>> explorer.reverse.value = True       # apply them in the reverse order
+    >>> bool(scene(explorer.state)["commute"])
+    False
     """
 
     summary = ("Transformation composer (interactive): a list of 2D operations with sliders, "

@@ -22,6 +22,8 @@ from .. import draw, transforms
 from ._base import Explorer
 from .quaternion import F_COLORS, F_FACES, F_VERTICES, LIGHT
 
+__all__ = ["GimbalExplorer", "State", "gimbal_frames", "scene"]
+
 RING_RADII = (1.2, 1.02, 0.86)
 AXIS_NAMES = ("yaw (outer ring, about z)", "pitch (middle ring, about its y)",
               "roll (inner ring, about its x)")
@@ -31,7 +33,13 @@ _CIRCLE = np.linspace(0.0, 2.0 * np.pi, 97)
 
 @dataclass
 class State:
-    """Euler angles in degrees, as on the sliders."""
+    """Euler angles in degrees, as on the sliders.
+
+    Examples
+    --------
+    >>> State(pitch_deg=90).pitch_deg
+    90
+    """
 
     yaw_deg: float = -25.0
     pitch_deg: float = 35.0
@@ -39,7 +47,15 @@ class State:
 
 
 def gimbal_frames(yaw, pitch, roll):
-    """The three ring frames (3x3 rotations): R_z(yaw), then R_y(pitch), then R_x(roll)."""
+    """The three ring frames (3x3 rotations): R_z(yaw), then R_y(pitch), then R_x(roll).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> outer, middle, inner = gimbal_frames(np.pi / 2, 0.0, 0.0)
+    >>> outer[:, 0].round(12) + 0.0               # yaw 90°: the outer ring's x axis is y
+    array([0., 1., 0.])
+    """
     f1 = transforms.rotate_z(yaw)[:3, :3]
     f2 = f1 @ transforms.rotate_y(pitch)[:3, :3]
     f3 = f2 @ transforms.rotate_x(roll)[:3, :3]
@@ -57,6 +73,12 @@ def scene(state):
         (:math:`\\det J`), ``axis_angle`` (the angle between the yaw and roll axes, degrees),
         ``lost_axis`` (the direction no gimbal can turn about when locked, else None),
         ``locked`` (bool) and ``text``.
+
+    Examples
+    --------
+    >>> s = scene(State(yaw_deg=10, pitch_deg=90, roll_deg=0))
+    >>> s["locked"], round(s["det"], 12) + 0.0, round(s["axis_angle"], 6)
+    (True, 0.0, 0.0)
     """
     yaw, pitch, roll = np.radians([state.yaw_deg, state.pitch_deg, state.roll_deg])
     f1, f2, f3 = gimbal_frames(yaw, pitch, roll)
@@ -96,11 +118,14 @@ def scene(state):
 class GimbalExplorer(Explorer):
     """Yaw, pitch and roll sliders turning three nested rings and the F inside them.
 
+    In a notebook, after ``%matplotlib widget``, end a cell with ``GimbalExplorer()``.
+
     Examples
     --------
-    In a notebook, after ``%matplotlib widget``::
-
-        GimbalExplorer()
+    >>> explorer = GimbalExplorer()
+    >>> explorer.pitch.value = 90           # what dragging the pitch slider does
+    >>> "Gimbal lock" in explorer.info.value
+    True
     """
 
     summary = ("Gimbal-lock explorer (interactive): yaw, pitch and roll sliders turn three "

@@ -13,6 +13,8 @@ import numpy as np
 from .. import draw, format as fmt, quaternions, shapes
 from ._base import Explorer
 
+__all__ = ["QuaternionExplorer", "State", "axis_from_angles", "readout", "scene"]
+
 F_VERTICES, F_FACES = shapes.letter_f_3d()
 F_VERTICES = 0.6 * F_VERTICES[:, [0, 2, 1]] * [1, -1, 1]
 """The F stands upright in the xz plane, its front facing -y (towards the default view)."""
@@ -26,7 +28,13 @@ LIGHT = (0.35, -0.8, 0.5)
 
 @dataclass
 class State:
-    """Everything the picture depends on (angles in degrees, as on the sliders)."""
+    """Everything the picture depends on (angles in degrees, as on the sliders).
+
+    Examples
+    --------
+    >>> State(angle_deg=90).angle_deg
+    90
+    """
 
     azimuth_deg: float = -30.0
     elevation_deg: float = 60.0
@@ -34,7 +42,13 @@ class State:
 
 
 def axis_from_angles(azimuth_deg, elevation_deg):
-    """The unit axis with the given azimuth (about z, from x) and elevation (above xy)."""
+    """The unit axis with the given azimuth (about z, from x) and elevation (above xy).
+
+    Examples
+    --------
+    >>> axis_from_angles(90, 0).round(12) + 0.0
+    array([0., 1., 0.])
+    """
     az, el = np.radians(azimuth_deg), np.radians(elevation_deg)
     return np.array([np.cos(el) * np.cos(az), np.cos(el) * np.sin(az), np.sin(el)])
 
@@ -56,6 +70,14 @@ def scene(state):
         ``frame`` (the matrix's columns: the rotated x, y, z axes), ``vertices`` (the rotated F),
         ``face_colors``, ``axis_line`` (2x3 points), ``arc`` (points sweeping the angle about
         the axis), and ``text`` (the readout, HTML with LaTeX).
+
+    Examples
+    --------
+    >>> s = scene(State(azimuth_deg=0, elevation_deg=90, angle_deg=90))   # 90° about z
+    >>> s["q"].round(4)
+    array([0.7071, 0.    , 0.    , 0.7071])
+    >>> s["frame"][:, 0].round(12) + 0.0          # the x axis now points along y
+    array([0., 1., 0.])
     """
     n = axis_from_angles(state.azimuth_deg, state.elevation_deg)
     theta = np.radians(state.angle_deg)
@@ -81,7 +103,14 @@ def scene(state):
 
 
 def readout(n, theta, q, m):
-    """The quaternion and its matrix as HTML with LaTeX, for the panel beside the figure."""
+    """The quaternion and its matrix as HTML with LaTeX, for the panel beside the figure.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> "45°" in readout(np.array([0, 0, 1.0]), np.pi / 2, np.array([0.7, 0, 0, 0.7]), np.eye(3))
+    True
+    """
     half = theta / 2
     return (
         f"<b>axis</b> $\\hat n = {fmt.vector_latex(n)}$, <b>angle</b> "
@@ -98,11 +127,14 @@ def readout(n, theta, q, m):
 class QuaternionExplorer(Explorer):
     """Sliders for the axis and the angle; the rotated F, frame and axis in 3D; q and R_q.
 
+    In a notebook, after ``%matplotlib widget``, end a cell with ``QuaternionExplorer()``.
+
     Examples
     --------
-    In a notebook, after ``%matplotlib widget``::
-
-        QuaternionExplorer()
+    >>> explorer = QuaternionExplorer()
+    >>> explorer.angle.value = 120          # what dragging the angle slider does
+    >>> explorer.state.angle_deg, "120°" in explorer.info.value
+    (120.0, True)
     """
 
     summary = ("Quaternion explorer (interactive): sliders for the rotation axis and angle, the "

@@ -13,6 +13,9 @@ import numpy as np
 from .. import draw, quaternions, shapes
 from ._base import Explorer
 
+__all__ = ["PRESETS", "SlerpExplorer", "State", "angular_speed", "euler_quaternions", "paths",
+           "scene"]
+
 F_VERTICES, F_FACES = shapes.letter_f_3d()
 F_VERTICES = 0.7 * F_VERTICES[:, [0, 2, 1]] * [1, -1, 1]
 TIP = F_VERTICES[np.argmax(F_VERTICES[:, 0] + F_VERTICES[:, 2])]
@@ -32,7 +35,13 @@ PRESETS = {
 
 @dataclass
 class State:
-    """Everything the picture depends on."""
+    """Everything the picture depends on.
+
+    Examples
+    --------
+    >>> State().preset in PRESETS
+    True
+    """
 
     preset: str = "tilt and turn"
     t: float = 0.5
@@ -43,6 +52,11 @@ def euler_quaternions(angles_deg):
 
     :math:`q = q_z(\text{yaw})\, q_y(\text{pitch})\, q_x(\text{roll})`, the quaternion form of
     :func:`course_lib.transforms.euler_zyx`.
+
+    Examples
+    --------
+    >>> euler_quaternions([90, 0, 0]).round(4)       # yaw 90°: a quarter turn about z
+    array([0.7071, 0.    , 0.    , 0.7071])
     """
     a = np.radians(np.asarray(angles_deg, dtype=float))
     qz = quaternions.from_axis_angle([0.0, 0.0, 1.0], a[..., 0])
@@ -52,7 +66,14 @@ def euler_quaternions(angles_deg):
 
 
 def paths(preset, samples=81):
-    """Orientations along t for both methods: ``(t, q_slerp, q_euler)``."""
+    """Orientations along t for both methods: ``(t, q_slerp, q_euler)``.
+
+    Examples
+    --------
+    >>> t, q_slerp, q_euler = paths("tilt and turn", samples=5)
+    >>> t.tolist(), q_slerp.shape, q_euler.shape
+    ([0.0, 0.25, 0.5, 0.75, 1.0], (5, 4), (5, 4))
+    """
     start, end = (np.asarray(e, dtype=float) for e in PRESETS[preset])
     t = np.linspace(0.0, 1.0, samples)
     q0, q1 = euler_quaternions(start), euler_quaternions(end)
@@ -62,7 +83,17 @@ def paths(preset, samples=81):
 
 
 def angular_speed(q, t):
-    """Angle turned per unit of t between consecutive orientations (degrees), at midpoints."""
+    """Angle turned per unit of t between consecutive orientations (degrees), at midpoints.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> t = np.linspace(0, 1, 3)
+    >>> q = euler_quaternions(np.column_stack([90 * t, 0 * t, 0 * t]))
+    >>> mid, speed = angular_speed(q, t)
+    >>> mid.tolist(), speed.round(6).tolist()
+    ([0.25, 0.75], [90.0, 90.0])
+    """
     step = quaternions.angle_between(q[:-1], q[1:])
     return 0.5 * (t[:-1] + t[1:]), np.degrees(step) / np.diff(t)
 
@@ -78,6 +109,12 @@ def scene(state):
         ``euler_tip`` (the tip at t), ``speed_t``, ``slerp_speed``, ``euler_speed`` (degrees
         per unit t), ``turned`` (total angle turned by each method, degrees), ``direct``
         (the angle between the two end orientations, degrees), ``text``.
+
+    Examples
+    --------
+    >>> s = scene(State("one axis only (they agree)", 0.5))
+    >>> round(s["direct"]), round(s["turned"]["slerp"]), round(s["turned"]["euler"])
+    (150, 150, 150)
     """
     t_all, q_slerp, q_euler = paths(state.preset)
     start, end = (np.asarray(e, dtype=float) for e in PRESETS[state.preset])
@@ -113,11 +150,14 @@ def scene(state):
 class SlerpExplorer(Explorer):
     """A t slider and a preset menu; the F under slerp and under Euler-angle interpolation.
 
+    In a notebook, after ``%matplotlib widget``, end a cell with ``SlerpExplorer()``.
+
     Examples
     --------
-    In a notebook, after ``%matplotlib widget``::
-
-        SlerpExplorer()
+    >>> explorer = SlerpExplorer()
+    >>> explorer.t.value = 0.8              # what dragging the t slider does
+    >>> bool((explorer.slerp_tip.get_data_3d()[0] == explorer.euler_tip.get_data_3d()[0]).all())
+    False
     """
 
     summary = ("Slerp explorer (interactive): a t slider moves the F between two orientations "
