@@ -27,7 +27,6 @@ test: $(STAMP)
 $(STAMP): pyproject.toml
 	@scripts/system-packages --python-only
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
 
