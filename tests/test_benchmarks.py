@@ -18,8 +18,11 @@ def test_benchmarks_quick_run_writes_both_tables(tmp_path):
                       r"([\d.]+) \| ([\d.]+) \|$", text, re.M)
     assert {r[0] for r in rows} >= {"quaternion -> matrix", "matrix -> quaternion"}
     for name, size, ours, ref_name, ref, ratio in rows:
-        assert float(ours) > 0 and float(ref) > 0
-        assert abs(float(ratio) - float(ours) / float(ref)) < 0.02 * float(ratio) + 0.01
+        assert float(ours) > 0 and float(ref) > 0, (name, ours, ref)
+        # the table rounds the times to 0.01 ms: allow for that in the printed ratio
+        ours, ref, ratio = float(ours), float(ref), float(ratio)
+        slack = ratio * (0.005 / ours + 0.005 / ref) + 0.01
+        assert abs(ratio - ours / ref) <= slack, (name, ours, ref, ratio)
     widgets = re.findall(r"^\| (.*explorer.*|.*composer.*) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \|",
                          text, re.M)
     assert len(widgets) == 4
