@@ -280,8 +280,13 @@ def rotate(q, points):
     r"""Rotate 3D points by the quaternion `q`: :math:`p' = q\,(0, p)\,\bar q`.
 
     `q` is normalized first (with a non-unit quaternion, :math:`q p \bar q` would also scale the
-    point by :math:`\lVert q \rVert^2`). The two Hamilton products are computed literally, as a
-    student would by hand; the scalar part of the result is 0 and is dropped.
+    point by :math:`\lVert q \rVert^2`). Multiplying out the two Hamilton products for a unit
+    :math:`q = (s, \mathbf v)` gives
+
+    .. math:: p' = p + 2s\,(\mathbf v \times p) + 2\,\mathbf v \times (\mathbf v \times p),
+
+    which is what is computed: the same result as ``multiply(multiply(q, (0, p)),
+    conjugate(q))[1:]`` with 18 instead of 28 multiplications per point.
 
     Parameters
     ----------
@@ -306,8 +311,9 @@ def rotate(q, points):
     q = normalize(q)
     p = as_points(points, "points", dims=3)
     broadcast_stacks(q=(q, 1), points=(p, 1))
-    pure = np.concatenate([np.zeros(p.shape[:-1] + (1,)), p], axis=-1)
-    return multiply(multiply(q, pure), conjugate(q))[..., 1:]
+    s, v = q[..., :1], q[..., 1:]
+    t = 2.0 * np.cross(v, p)
+    return p + s * t + np.cross(v, t)
 
 
 def to_matrix(q, homogeneous=False):

@@ -698,3 +698,14 @@ def test_mismatched_stacks_are_reported_by_name(call, names):
         call()
     message = str(info.value)
     assert all(name in message for name in names) and "broadcast" not in message
+
+
+def test_rotate_equals_the_two_hamilton_products():
+    """rotate() uses the expanded formula; it must equal q (0, p) q̄ computed literally."""
+    gen = rng(99)
+    q = random_quats(gen, 500, unit=True)
+    p = gen.normal(size=(500, 3))
+    pure = np.column_stack([np.zeros(500), p])
+    literal = Q.multiply(Q.multiply(q, pure), Q.conjugate(q))
+    assert np.allclose(literal[:, 0], 0, atol=1e-12)
+    assert np.allclose(Q.rotate(q, p), literal[:, 1:], atol=1e-12)

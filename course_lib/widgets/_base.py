@@ -1,9 +1,62 @@
-"""What every explorer shares: how it displays itself, with and without a live kernel."""
+"""What every explorer shares: its display (with and without a live kernel) and layout helpers."""
 import base64
 import io
 
+from .. import draw
 
-__all__ = ["Explorer"]
+__all__ = ["Explorer", "beside", "degree_sliders", "figure_3d"]
+
+
+def figure_3d(radius, title, size=4.3):
+    """A square figure with one 3D axes (light reference frame, no box): ``(fig, ax)``.
+
+    Examples
+    --------
+    >>> fig, ax = figure_3d(1.5, "demo")
+    >>> ax.get_title(), ax.get_xlim()
+    ('demo', (np.float64(-1.5), np.float64(1.5)))
+    """
+    fig = draw.figure(figsize=(size, size))
+    ax = fig.add_subplot(projection="3d")
+    fig.subplots_adjust(left=0, right=1, bottom=0.02, top=0.95)
+    draw.setup_axes_3d(ax, radius=radius, title=title, box=False)
+    return fig, ax
+
+
+def degree_sliders(on_change, label_width="80px", **specs):
+    """Sliders in whole degrees, ``name=(description, value, min, max)``, each calling
+    `on_change` when moved; returned in a dict by name.
+
+    Examples
+    --------
+    >>> sliders = degree_sliders(print, yaw=("yaw °", 30, -180, 180))
+    >>> sliders["yaw"].value, sliders["yaw"].step
+    (30.0, 1.0)
+    """
+    import ipywidgets as w
+
+    sliders = {}
+    for name, (description, value, low, high) in specs.items():
+        slider = w.FloatSlider(value=value, min=low, max=high, step=1, description=description,
+                               continuous_update=True, style={"description_width": label_width},
+                               layout=w.Layout(width="330px"))
+        slider.observe(on_change, names="value")
+        sliders[name] = slider
+    return sliders
+
+
+def beside(canvas, controls):
+    """The figure on the left and the controls on the right (wrapping below on narrow screens).
+
+    Examples
+    --------
+    >>> import ipywidgets as w
+    >>> type(beside(w.Label("figure"), w.Label("controls"))).__name__
+    'HBox'
+    """
+    import ipywidgets as w
+
+    return w.HBox([canvas, controls], layout=w.Layout(flex_flow="row wrap", align_items="center"))
 
 
 class Explorer:

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, transforms
-from ._base import Explorer
+from ._base import Explorer, beside, degree_sliders, figure_3d
 from .quaternion import F_COLORS, F_FACES, F_VERTICES, LIGHT
 
 __all__ = ["GimbalExplorer", "State", "gimbal_frames", "scene"]
@@ -137,10 +137,7 @@ class GimbalExplorer(Explorer):
 
         self.state = state or State()
         s = scene(self.state)
-        self.fig = draw.figure(figsize=(4.3, 4.3))
-        ax = self.fig.add_subplot(projection="3d")
-        self.fig.subplots_adjust(left=0, right=1, bottom=0.02, top=0.95)
-        draw.setup_axes_3d(ax, radius=1.3, title="R = R_z(yaw) R_y(pitch) R_x(roll)", box=False)
+        self.fig, ax = figure_3d(1.3, "R = R_z(yaw) R_y(pitch) R_x(roll)")
         self.rings, self.pivots = [], []
         for k in range(3):
             (ring,) = ax.plot(*s["rings"][k].T, color=RING_COLORS[k], lw=3, alpha=0.85)
@@ -153,22 +150,16 @@ class GimbalExplorer(Explorer):
         self.blitter = draw.Blitter(self.fig, [self.mesh, *self.rings, *self.pivots, self.lost])
         self._set_lost(s)
 
-        slider = dict(continuous_update=True, style={"description_width": "60px"},
-                      layout=w.Layout(width="330px"), step=1)
-        self.yaw = w.FloatSlider(value=self.state.yaw_deg, min=-180, max=180,
-                                 description="yaw °", **slider)
-        self.pitch = w.FloatSlider(value=self.state.pitch_deg, min=-90, max=90,
-                                   description="pitch °", **slider)
-        self.roll = w.FloatSlider(value=self.state.roll_deg, min=-180, max=180,
-                                  description="roll °", **slider)
-        for control in (self.yaw, self.pitch, self.roll):
-            control.observe(self._on_change, names="value")
+        sliders = degree_sliders(self._on_change, label_width="60px",
+                                 yaw=("yaw °", self.state.yaw_deg, -180, 180),
+                                 pitch=("pitch °", self.state.pitch_deg, -90, 90),
+                                 roll=("roll °", self.state.roll_deg, -180, 180))
+        self.yaw, self.pitch, self.roll = sliders.values()
         legend = "<br>".join(f"<span style='color:{RING_COLORS[k]}'>&#9679;</span> "
                              f"{AXIS_NAMES[k]}" for k in range(3))
         self.info = w.HTML(value=s["text"], layout=w.Layout(width="330px"))
-        controls = w.VBox([self.yaw, self.pitch, self.roll, w.HTML(legend), self.info])
-        self.widget = w.HBox([self.fig.canvas, controls],
-                             layout=w.Layout(flex_flow="row wrap", align_items="center"))
+        self.widget = beside(self.fig.canvas,
+                             w.VBox([*sliders.values(), w.HTML(legend), self.info]))
 
     @staticmethod
     def _pivot_line(axis, k):

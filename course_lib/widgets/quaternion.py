@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, format as fmt, quaternions, shapes
-from ._base import Explorer
+from ._base import Explorer, beside, degree_sliders, figure_3d
 
 __all__ = ["QuaternionExplorer", "State", "axis_from_angles", "readout", "scene"]
 
@@ -145,11 +145,7 @@ class QuaternionExplorer(Explorer):
 
         self.state = state or State()
         s = scene(self.state)
-        self.fig = draw.figure(figsize=(4.3, 4.3))
-        ax = self.fig.add_subplot(projection="3d")
-        self.fig.subplots_adjust(left=0, right=1, bottom=0.02, top=0.95)
-        draw.setup_axes_3d(ax, radius=1.25, title="p' = q p q̄", box=False)
-        self.ax = ax
+        self.fig, ax = figure_3d(1.25, "p' = q p q̄")
         draw.frame_3d(ax, lw=1.2, alpha=0.35, ls="--")
         self.frame = draw.frame_3d(ax, lw=2.5)
         draw.set_frame_3d(self.frame, s["frame"])
@@ -162,20 +158,14 @@ class QuaternionExplorer(Explorer):
         self.blitter = draw.Blitter(self.fig, [self.mesh, *self.frame, self.axis_line, self.arc,
                                                self.arc_end])
 
-        slider = dict(continuous_update=True, style={"description_width": "80px"},
-                      layout=w.Layout(width="330px"))
-        self.azimuth = w.FloatSlider(value=self.state.azimuth_deg, min=-180, max=180, step=1,
-                                     description="axis azim. °", **slider)
-        self.elevation = w.FloatSlider(value=self.state.elevation_deg, min=-90, max=90, step=1,
-                                       description="axis elev. °", **slider)
-        self.angle = w.FloatSlider(value=self.state.angle_deg, min=-360, max=360, step=1,
-                                   description="angle θ °", **slider)
-        for control in (self.azimuth, self.elevation, self.angle):
-            control.observe(self._on_change, names="value")
+        sliders = degree_sliders(
+            self._on_change,
+            azimuth=("axis azim. °", self.state.azimuth_deg, -180, 180),
+            elevation=("axis elev. °", self.state.elevation_deg, -90, 90),
+            angle=("angle θ °", self.state.angle_deg, -360, 360))
+        self.azimuth, self.elevation, self.angle = sliders.values()
         self.info = w.HTMLMath(value=s["text"], layout=w.Layout(width="330px"))
-        controls = w.VBox([self.azimuth, self.elevation, self.angle, self.info])
-        self.widget = w.HBox([self.fig.canvas, controls],
-                             layout=w.Layout(flex_flow="row wrap", align_items="center"))
+        self.widget = beside(self.fig.canvas, w.VBox([*sliders.values(), self.info]))
 
     def _on_change(self, change):
         self.state.azimuth_deg = self.azimuth.value
