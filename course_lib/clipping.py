@@ -35,6 +35,7 @@ __all__ = [
     "BIT_NAMES",
     "back_faces",
     "box_planes",
+    "clip_segment",
     "clip_polygon",
     "clip_polygon_steps",
     "cohen_sutherland",
@@ -611,6 +612,50 @@ def view_volume_planes(matrix):
             row = m[3] + sign * m[k]                   # row . (p, 1) >= 0 inside
             planes.append((name, -row[:3], float(row[3])))
     return planes
+
+
+def clip_segment(p0, p1, planes):
+    r"""Clip a segment to a convex region given by half-spaces (Cyrus-Beck).
+
+    Liang-Barsky's idea for any convex region: with :math:`f_i = \mathbf n \cdot p_i - c`
+    (negative inside), a plane the segment crosses cuts it at :math:`t = f_0 / (f_0 - f_1)`;
+    where :math:`p_0` is outside that is an entering point (raise :math:`t_{in}`), where
+    :math:`p_1` is outside a leaving point (lower :math:`t_{out}`). Used for view frusta, which
+    are not boxes.
+
+    Parameters
+    ----------
+    p0, p1 : array_like, shape (d,)
+    planes : sequence of (normal, offset) or (name, normal, offset)
+        Half-spaces :math:`\mathbf n \cdot \mathbf x \le c` (e.g. :func:`view_volume_planes`).
+
+    Returns
+    -------
+    tuple of two ndarrays, or None
+
+    Examples
+    --------
+    >>> clip_segment([-2, 0], [2, 0], [([1, 0], 1), ([-1, 0], 1)])    # |x| <= 1
+    (array([-1.,  0.]), array([1., 0.]))
+    """
+    a = as_points(p0, "p0", dims=(2, 3))
+    b = as_points(p1, "p1", dims=(2, 3))
+    if a.shape != b.shape or a.ndim != 1:
+        raise ValueError("p0 and p1 must be two points of the same dimension")
+    t_in, t_out = 0.0, 1.0
+    for plane in planes:
+        normal, offset = plane[-2:]
+        n = as_vector(normal, "normal", a.size)
+        f0, f1 = float(n @ a - offset), float(n @ b - offset)
+        if f0 > 0 and f1 > 0:
+            return None
+        if f0 > 0:
+            t_in = max(t_in, f0 / (f0 - f1))
+        elif f1 > 0:
+            t_out = min(t_out, f0 / (f0 - f1))
+        if t_in > t_out:
+            return None
+    return a + t_in * (b - a), a + t_out * (b - a)
 
 
 def _polygon(polygon, dims):

@@ -320,7 +320,7 @@ def simple_perspective(d):
     return np.array([[d, 0, 0, 0], [0, d, 0, 0], [0, 0, d, 0], [0, 0, 1, 0]], dtype=float)
 
 
-def oblique(dop):
+def oblique(dop, keep_depth=False):
     r"""The textbook's :math:`P_{OBLI}`: parallel projection along `dop` onto the xy plane.
 
     Every point slides along the direction of projection :math:`DOP` until :math:`z = 0`:
@@ -333,11 +333,18 @@ def oblique(dop):
     The cavalier (:math:`DOP` at 45° to the plane: depth drawn at full length) and cabinet (depth
     at half length) projections are the classic oblique ones.
 
+    For an oblique *camera* the depth must survive for the depth test: with
+    ``keep_depth=True`` the matrix keeps z (the entry :math:`(3, 3)` is 1), which makes it a
+    shear that turns the direction of projection into the z axis; follow it with
+    :func:`orthographic` to map the sheared box onto the canonical cube.
+
     Parameters
     ----------
     dop : array_like, shape (3,)
         The direction of projection; its z component must not be 0 (a direction parallel to the
         plane never reaches it).
+    keep_depth : bool, optional
+        Keep z instead of flattening onto the plane (default False: the textbook's matrix).
 
     Returns
     -------
@@ -352,6 +359,8 @@ def oblique(dop):
     --------
     >>> oblique([1, 0, -1]) @ [0, 0, -2, 1]      # (0, 0, -2) slides 2 units along x
     array([-2.,  0.,  0.,  1.])
+    >>> oblique([1, 0, -1], keep_depth=True) @ [0, 0, -2, 1]
+    array([-2.,  0., -2.,  1.])
     """
     v = as_vector(dop, "dop", 3)
     if abs(v[2]) < 1e-12:
@@ -360,7 +369,8 @@ def oblique(dop):
     m = np.eye(4)
     m[0, 2] = -v[0] / v[2]
     m[1, 2] = -v[1] / v[2]
-    m[2, 2] = 0.0
+    if not keep_depth:
+        m[2, 2] = 0.0
     return m
 
 
