@@ -29,7 +29,7 @@ bit   value      meaning
 """
 import numpy as np
 
-from ._validate import as_array, as_points, as_vector
+from ._validate import as_array, as_matrix, as_points, as_vector, broadcast_stacks
 
 __all__ = [
     "BIT_NAMES",
@@ -95,6 +95,7 @@ def is_back_face(normal, view_vector):
     """
     n = as_points(normal, "normal", dims=3)
     v = as_points(view_vector, "view_vector", dims=3)
+    broadcast_stacks(normal=(n, 1), view_vector=(v, 1))
     result = np.einsum("...i,...i->...", n, v) >= 0
     return bool(result) if result.ndim == 0 else result
 
@@ -131,9 +132,14 @@ def back_faces(vertices, faces, eye=None, direction=None):
     r"""Back-face culling of a whole mesh: a boolean mask, True for the faces to cull.
 
     Give either the `eye` position (perspective: the view vector differs per face, from the eye
-    to the face's first vertex) or a constant view `direction` (parallel projection, or any
-    mesh already in CSS, where the view direction is :math:`(0, 0, 1)` with depth growing away
-    from the viewer).
+    to the face's first vertex) or a constant view `direction` (a parallel projection).
+
+    After the projection, in CSS, the projectors are parallel to z and the viewer looks along
+    +z (depth grows away from the viewer). But the projection also mirrors z (CSS is
+    left-handed), which reverses every face's winding: normals computed from CSS coordinates
+    point *inwards*. So for a mesh in CSS use ``direction=(0, 0, -1)``, which amounts to the
+    renderer's usual test: a face is seen from the front when its projected vertices run
+    counter-clockwise on the screen.
 
     Only valid for closed, opaque meshes with consistently oriented faces: through a hole or a
     transparent face one would see the back faces.
@@ -261,6 +267,12 @@ def describe_outcode(code, dim=2):
     >>> describe_outcode(0, dim=3)
     '000000 (inside)'
     """
+    if dim not in (2, 3):
+        raise ValueError(f"dim must be 2 or 3, got {dim!r}")
+    if isinstance(code, bool) or not isinstance(code, (int, np.integer)) \
+            or not 0 <= int(code) < 4 ** dim:
+        raise ValueError(f"code must be an outcode of {2 * dim} bits (an integer from 0 to "
+                         f"{4 ** dim - 1}), got {code!r}")
     bits = format(int(code), f"0{2 * dim}b")
     sides = [BIT_NAMES[k] for k in range(2 * dim - 1, -1, -1) if int(code) >> k & 1]
     return f"{bits} ({', '.join(sides) if sides else 'inside'})"
@@ -373,9 +385,11 @@ def cohen_sutherland_many(p0, p1, box_min, box_max):
     Returns
     -------
     q0, q1 : ndarray, shape (n, d)
-        The clipped end points (unchanged where a segment is rejected).
+        The clipped end points (the input end points where a segment is rejected).
     visible : ndarray of bool, shape (n,)
         False where the whole segment is outside.
+
+    Any stack of segments works, shape (..., d); the results have the same leading shape.
 
     Examples
     --------
@@ -385,8 +399,10 @@ def cohen_sutherland_many(p0, p1, box_min, box_max):
     ([True, False], [0.0, 0.5], [1.0, 0.5])
     """
     lo, hi = _box(box_min, box_max)
-    a, b = _segments(p0, p1, len(lo), single=False)
-    a, b = np.array(a, dtype=float), np.array(b, dtype=float)
+    first_points, second_points = _segments(p0, p1, len(lo), single=False)
+    shape = first_points.shape
+    a = first_points.reshape(-1, len(lo)).copy()
+    b = second_points.reshape(-1, len(lo)).copy()
     c0, c1 = outcode(a, lo, hi), outcode(b, lo, hi)
     bounds = np.concatenate([lo[:, None], hi[:, None]], axis=1).ravel()   # per bit: the limit
     for _ in range(2 * 2 * len(lo) + 1):
@@ -409,7 +425,9 @@ def cohen_sutherland_many(p0, p1, box_min, box_max):
         c0[idx] = np.where(first, outcode(new, lo, hi), c0[idx])
         c1[idx] = np.where(first, c1[idx], outcode(new, lo, hi))
     visible = (c0 | c1) == 0
-    return a, b, visible
+    a[~visible] = first_points.reshape(-1, len(lo))[~visible]
+    b[~visible] = second_points.reshape(-1, len(lo))[~visible]
+    return a.reshape(shape), b.reshape(shape), visible.reshape(shape[:-1])
 
 
 # ---------------------------------------------------------------------------------------------
@@ -491,7 +509,10 @@ def liang_barsky_steps(p0, p1, box_min, box_max):
         steps.append(step)
         if t_in > t_out:
             return None, steps
-    return (a + t_in * delta, a + t_out * delta), steps
+    # t = 0 and t = 1 give the end points themselves (a + 1.0 * (b - a) may differ in the last bit)
+    start = a if t_in == 0 else a + t_in * delta
+    end = b if t_out == 1 else a + t_out * delta
+    return (start, end), steps
 
 
 def liang_barsky(p0, p1, box_min, box_max):
@@ -525,6 +546,7 @@ def liang_barsky_many(p0, p1, box_min, box_max):
     Returns
     -------
     q0, q1 : ndarray, shape (n, d)
+        The clipped end points (the input end points where a segment is rejected).
     visible : ndarray of bool, shape (n,)
 
     Examples
@@ -547,7 +569,9 @@ def liang_barsky_many(p0, p1, box_min, box_max):
     t_out = np.min(np.where(leaving, t, 1.0), axis=-1, initial=1.0)
     parallel_out = np.any((p == 0) & (q < 0), axis=-1)
     visible = (t_in <= t_out) & ~parallel_out
-    return a + t_in[..., None] * delta, a + t_out[..., None] * delta, visible
+    start = np.where((t_in == 0)[..., None] | ~visible[..., None], a, a + t_in[..., None] * delta)
+    end = np.where((t_out == 1)[..., None] | ~visible[..., None], b, a + t_out[..., None] * delta)
+    return start, end, visible
 
 
 # ---------------------------------------------------------------------------------------------
@@ -716,22 +740,31 @@ def clip_polygon_steps(polygon, planes):
         n = as_vector(normal, "normal", poly.shape[1])
         c = float(offset)
         if len(poly):
-            s = poly @ n - c                               # <= 0 inside
-            inside = s <= 0
-            nxt = np.roll(np.arange(len(poly)), -1)
-            out = []
-            for i, j in zip(range(len(poly)), nxt):
-                if inside[i] and inside[j]:
-                    out.append(poly[j])
-                elif inside[i] != inside[j]:
-                    t = s[i] / (s[i] - s[j])
-                    point = poly[i] + t * (poly[j] - poly[i])
-                    out.append(point)
-                    if inside[j]:
-                        out.append(poly[j])
-            poly = np.array(out, dtype=float).reshape(-1, poly.shape[1])
+            poly = _clip_by_plane(poly, n, c)
         steps.append((name, poly))
     return steps
+
+
+def _clip_by_plane(poly, normal, offset):
+    """One Sutherland-Hodgman pass: the four cases for each edge S -> E, as in the table.
+
+    A plain loop over the edges: for the polygons of a lesson (tens of vertices) it is faster
+    than a vectorized version, whose many small numpy calls cost more than the loop.
+    """
+    side = poly @ normal - offset                       # <= 0 inside
+    inside = side <= 0
+    out = []
+    count = len(poly)
+    for i in range(count):
+        j = (i + 1) % count
+        if inside[i] and inside[j]:                     # in, in: E
+            out.append(poly[j])
+        elif inside[i] != inside[j]:                    # crossing: I (then E if coming in)
+            t = side[i] / (side[i] - side[j])
+            out.append(poly[i] + t * (poly[j] - poly[i]))
+            if inside[j]:
+                out.append(poly[j])
+    return np.array(out, dtype=float).reshape(-1, poly.shape[1])
 
 
 def clip_polygon(polygon, planes):

@@ -25,7 +25,7 @@ projection onto the plane :math:`z = d`), :func:`orthographic_xy` (:math:`P_{ORT
 import numpy as np
 
 from . import transforms
-from ._validate import as_scalar, as_vector
+from ._validate import as_matrix, as_scalar, as_vector
 
 __all__ = [
     "cross_ratio",
@@ -92,9 +92,9 @@ def look_at(eye, gaze, up):
     e = as_vector(eye, "eye", 3)
     g = as_vector(gaze, "gaze", 3)
     u = as_vector(up, "up", 3)
-    if np.linalg.norm(g) < 1e-12:
+    if not np.any(g):
         raise ValueError("gaze must not be the zero vector: it is the direction of view")
-    if np.linalg.norm(u) < 1e-12:
+    if not np.any(u):
         raise ValueError("up must not be the zero vector")
     z_e = -g / np.linalg.norm(g)
     x_dir = np.cross(u, z_e)
@@ -363,7 +363,7 @@ def oblique(dop, keep_depth=False):
     array([-2.,  0., -2.,  1.])
     """
     v = as_vector(dop, "dop", 3)
-    if abs(v[2]) < 1e-12:
+    if not np.any(v) or abs(v[2]) <= 1e-12 * np.linalg.norm(v):
         raise ValueError("dop must have a non-zero z component: a direction parallel to the xy "
                          "plane never reaches it")
     m = np.eye(4)
@@ -473,8 +473,10 @@ def to_screen(points, view, projection, viewport_matrix):
     >>> to_screen([0, 0, 0], V, P, viewport(0, 0, 100, 100)).round(3)   # centre of the image
     array([50.   , 50.   ,  0.889])
     """
-    css = transforms.apply(np.asarray(projection, float) @ np.asarray(view, float), points)
-    return transforms.apply(viewport_matrix, css)
+    v = as_matrix(view, "view", 4)
+    p = as_matrix(projection, "projection", 4)
+    w = as_matrix(viewport_matrix, "viewport_matrix", 4)
+    return transforms.apply(w, transforms.apply(p @ v, points))
 
 
 def cross_ratio(a, b, c, d):
@@ -505,13 +507,13 @@ def cross_ratio(a, b, c, d):
     >>> cross_ratio([0, 0], [1, 0], [2, 0], [3, 0])      # (2 * 2) / (1 * 3)
     1.3333333333333333
     """
-    pts = np.array([as_vector(p, name, (2, 3)) for p, name in zip((a, b, c, d), "abcd")]) \
-        if len({np.size(p) for p in (a, b, c, d)}) == 1 else None
-    if pts is None:
+    given = [as_vector(p, name, (2, 3)) for p, name in zip((a, b, c, d), "abcd")]
+    if len({p.size for p in given}) != 1:
         raise ValueError("a, b, c and d must all be 2D or all 3D points")
+    pts = np.array(given)
     direction = pts[3] - pts[0]
     length = np.linalg.norm(direction)
-    if length < 1e-12:
+    if length == 0:
         raise ValueError("a and d must be distinct points")
     u = direction / length
     offsets = pts - pts[0]
@@ -519,6 +521,6 @@ def cross_ratio(a, b, c, d):
     if np.abs(offsets - np.outer(s, u)).max() > 1e-9 * max(1.0, np.abs(pts).max()):
         raise ValueError("the four points must lie on one straight line")
     ac, bd, bc, ad = s[2] - s[0], s[3] - s[1], s[2] - s[1], s[3] - s[0]
-    if abs(bc) < 1e-12:
+    if bc == 0:
         raise ValueError("b and c must be distinct points")
     return float(ac * bd / (bc * ad))
