@@ -53,8 +53,8 @@ def widgets(quick=False):
     import matplotlib.pyplot as plt
 
     from benchmarks import widget_row
-    from course_lib.widgets import (clipping3d, cohen_sutherland, liang_barsky,
-                                    sutherland_hodgman)
+    from course_lib.widgets import (clipping3d, cohen_sutherland, hidden_surface, liang_barsky,
+                                    sutherland_hodgman, zbuffer)
 
     repeat = 5 if quick else 40
     rows = []
@@ -79,10 +79,16 @@ def widgets(quick=False):
         explorer.fig.canvas.draw()
         rows.append(widget_row(name, dragging(explorer, 1), explorer.fig.canvas.draw, repeat))
         plt.close(explorer.fig)
-    explorer = clipping3d.ClippingExplorer3D()
-    explorer.fig.canvas.draw()
-    rows.append(widget_row("3D clipping explorer (turn slider)",
-                           lambda i: setattr(explorer.turn, "value", -90 + (7 * i) % 180),
-                           explorer.fig.canvas.draw, repeat))
-    plt.close(explorer.fig)
+    for name, explorer, move in (
+            ("3D clipping explorer (turn slider)", clipping3d.ClippingExplorer3D(),
+             lambda ex, i: setattr(ex.turn, "value", -90 + (7 * i) % 180)),
+            ("z-buffer trace (step slider)", zbuffer.ZBufferExplorer(),
+             lambda ex, i: setattr(ex.step, "value", i % 5)),
+            ("back faces and depth buffer (camera slider)",
+             hidden_surface.HiddenSurfaceExplorer(),
+             lambda ex, i: setattr(ex.azimuth, "value", -90 + (7 * i) % 180))):
+        explorer.fig.canvas.draw()
+        rows.append(widget_row(name, lambda i, ex=explorer, move=move: move(ex, i),
+                               explorer.fig.canvas.draw, repeat))
+        plt.close(explorer.fig)
     return rows

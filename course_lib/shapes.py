@@ -5,7 +5,7 @@ mirroring or shear of it can be told apart from every other at a glance.
 """
 import numpy as np
 
-__all__ = ["letter_f", "letter_f_3d", "unit_square"]
+__all__ = ["letter_f", "letter_f_3d", "torus", "unit_square"]
 
 _F_OUTLINE = np.array([
     [0.0, 0.0], [0.35, 0.0], [0.35, 0.6], [0.8, 0.6], [0.8, 0.9], [0.35, 0.9],
@@ -82,3 +82,42 @@ def unit_square(closed=True):
     """
     square = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
     return np.vstack([square, square[:1]]) if closed else square
+
+
+def torus(major=1.0, minor=0.4, segments=24, rings=12):
+    """A closed triangle mesh of a torus around the z axis, faces oriented outwards.
+
+    Parameters
+    ----------
+    major, minor : float
+        Radius of the centre circle and of the tube.
+    segments, rings : int
+        Divisions around the z axis and around the tube (at least 3 each).
+
+    Returns
+    -------
+    vertices : ndarray, shape (segments * rings, 3)
+    faces : ndarray of int, shape (2 * segments * rings, 3)
+        Counter-clockwise seen from outside.
+
+    Examples
+    --------
+    >>> v, f = torus(segments=8, rings=4)
+    >>> v.shape, f.shape
+    ((32, 3), (64, 3))
+    """
+    if segments < 3 or rings < 3:
+        raise ValueError(f"segments and rings must be at least 3, got {segments} and {rings}")
+    u = np.linspace(0, 2 * np.pi, segments, endpoint=False)[:, None]
+    v = np.linspace(0, 2 * np.pi, rings, endpoint=False)[None, :]
+    radius = major + minor * np.cos(v)
+    vertices = np.stack(np.broadcast_arrays(radius * np.cos(u), radius * np.sin(u),
+                                            minor * np.sin(v)), axis=-1).reshape(-1, 3)
+    i, j = np.meshgrid(np.arange(segments), np.arange(rings), indexing="ij")
+    a = i * rings + j
+    b = ((i + 1) % segments) * rings + j
+    c = ((i + 1) % segments) * rings + (j + 1) % rings
+    d = i * rings + (j + 1) % rings
+    faces = np.concatenate([np.stack([a, b, c], -1).reshape(-1, 3),
+                            np.stack([a, c, d], -1).reshape(-1, 3)])
+    return vertices, faces

@@ -269,3 +269,77 @@ def test_clipping3d_widget_controls():
     assert "nothing is left" in ex.info.value
     ex.region.value = "frustum"
     assert ex.state.region == "frustum" and "frustum" in ex.info.value
+
+
+# --- z-buffer trace and hidden-surface explorer ---------------------------------------------
+
+from course_lib.widgets import hidden_surface, zbuffer  # noqa: E402
+
+
+def brute_force_zbuffer(triangles, width, height):
+    """An independent z-buffer: every pixel centre against every triangle, nearest wins
+    (inside test and depth by barycentric coordinates, computed here from scratch)."""
+    ids = np.full((height, width), -1)
+    depth = np.full((height, width), np.inf)
+    for j in range(height):
+        for i in range(width):
+            x, y = i + 0.5, j + 0.5
+            for k, tri in enumerate(triangles):
+                (x0, y0, z0), (x1, y1, z1), (x2, y2, z2) = tri
+                det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
+                l1 = ((x - x0) * (y2 - y0) - (x2 - x0) * (y - y0)) / det
+                l2 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) / det
+                l0 = 1 - l1 - l2
+                if min(l0, l1, l2) > 1e-9:                     # strictly inside
+                    z = l0 * z0 + l1 * z1 + l2 * z2
+                    if z < depth[j, i]:
+                        depth[j, i], ids[j, i] = z, k
+    return ids, depth
+
+
+@pytest.mark.parametrize("order", list(zbuffer.ORDERS))
+def test_zbuffer_trace_final_buffers_match_brute_force(order):
+    ids, depth = brute_force_zbuffer(zbuffer.TRIANGLES, zbuffer.WIDTH, zbuffer.HEIGHT)
+    s = zbuffer.scene(zbuffer.State(order, step=len(zbuffer.TRIANGLES)))
+    assert np.array_equal(s["ids"], ids)
+    assert np.allclose(s["depth"], depth)
+    visible = int((ids >= 0).sum())
+    assert sum(s["writes"]) >= visible and f"At least {visible} writes" in s["text"]
+
+
+def test_zbuffer_trace_steps():
+    s0 = zbuffer.scene(zbuffer.State(step=0))
+    assert (s0["ids"] == -1).all() and np.isinf(s0["depth"]).all() and s0["covered"] is None
+    first = zbuffer.scene(zbuffer.State(step=1))                # triangle 0 into empty buffers
+    assert np.array_equal(first["covered"], first["written"])
+    assert np.array_equal(first["ids"] == 0, first["covered"])
+    ex = zbuffer.ZBufferExplorer()
+    ex.step.value = 3
+    assert "triangle 2" in ex.info.value
+    marked = np.array(ex.marks[0][1].get_xydata())             # the × of the written pixels
+    written = zbuffer.scene(ex.state)["written"]
+    assert len(marked) == written.sum()
+    ex.order.value = "reversed (3, 2, 1, 0)"
+    assert zbuffer.scene(ex.state)["current"] == 1
+
+
+def test_hidden_surface_culling_changes_work_not_the_picture():
+    for azimuth in (-75, 10, 140):
+        culled = hidden_surface.scene(hidden_surface.State(azimuth, 30, cull=True))
+        full = hidden_surface.scene(hidden_surface.State(azimuth, 30, cull=False))
+        assert np.array_equal(culled["depth"], full["depth"])
+        assert culled["drawn"] < full["drawn"] and culled["fragments"] < full["fragments"]
+        # the back faces, from the eye: n . (face - eye) >= 0, recomputed here
+        v, f = hidden_surface.VERTICES, hidden_surface.FACES
+        n = np.cross(v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]])
+        expected = np.einsum("ij,ij->i", n, v[f[:, 0]] - culled["eye"]) >= 0
+        assert np.array_equal(culled["back"], expected)
+
+
+def test_hidden_surface_widget():
+    ex = hidden_surface.HiddenSurfaceExplorer()
+    ex.azimuth.value = 30
+    s = hidden_surface.scene(ex.state)
+    assert np.array_equal(np.ma.filled(ex.depth.get_array(), np.inf), s["depth"])
+    ex.cull.value = False
+    assert "Without culling" in ex.info.value
