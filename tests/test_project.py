@@ -16,11 +16,16 @@ import yaml
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOK_DIRS = ("notebooks", "solutions", "exercises")
 ALGORITHM_MODULES = ("course_lib.transforms", "course_lib.quaternions", "course_lib.format",
-                     "course_lib.shapes", "course_lib._validate", "course_lib.exercises.core")
+                     "course_lib.shapes", "course_lib._validate", "course_lib.exercises.core",
+                     "course_lib.viewing", "course_lib.clipping", "course_lib.visibility")
 DOCUMENTED_MODULES = ALGORITHM_MODULES + (
     "course_lib.draw", "course_lib.exercises.build", "course_lib.exercises.ch03",
     "course_lib.widgets._base", "course_lib.widgets.quaternion", "course_lib.widgets.slerp",
-    "course_lib.widgets.gimbal", "course_lib.widgets.composer")
+    "course_lib.widgets.gimbal", "course_lib.widgets.composer", "course_lib.widgets.camera",
+    "course_lib.widgets.cohen_sutherland", "course_lib.widgets.liang_barsky",
+    "course_lib.widgets.sutherland_hodgman", "course_lib.widgets.clipping3d",
+    "course_lib.widgets.zbuffer", "course_lib.widgets.hidden_surface",
+    "course_lib.widgets._drag")
 
 
 def all_notebooks():
