@@ -745,6 +745,12 @@ def clip_polygon_steps(polygon, planes):
     return steps
 
 
+def _cut_edge(s_point, e_point, s_side, e_side):
+    """Where the edge S -> E crosses the plane (signed distances s_side, e_side of opposite sign)."""
+    t = s_side / (s_side - e_side)
+    return s_point + t * (e_point - s_point)
+
+
 def _clip_by_plane(poly, normal, offset):
     """One Sutherland-Hodgman pass: the four cases for each edge S -> E, as in the table.
 
@@ -759,11 +765,13 @@ def _clip_by_plane(poly, normal, offset):
         j = (i + 1) % count
         if inside[i] and inside[j]:                     # in, in: E
             out.append(poly[j])
-        elif inside[i] != inside[j]:                    # crossing: I (then E if coming in)
-            t = side[i] / (side[i] - side[j])
-            out.append(poly[i] + t * (poly[j] - poly[i]))
-            if inside[j]:
-                out.append(poly[j])
+        elif inside[i]:                                 # in, out: I (unless S itself lies on
+            if side[i] < 0:                             # the plane: then I = S, already out)
+                out.append(_cut_edge(poly[i], poly[j], side[i], side[j]))
+        elif inside[j]:                                 # out, in: I, then E (I = E when E
+            if side[j] < 0:                             # lies on the plane: E only)
+                out.append(_cut_edge(poly[i], poly[j], side[i], side[j]))
+            out.append(poly[j])
     return np.array(out, dtype=float).reshape(-1, poly.shape[1])
 
 

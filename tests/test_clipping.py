@@ -1064,3 +1064,16 @@ def test_is_back_face_mismatched_stacks_are_reported_by_name():
         C.is_back_face(np.ones((3, 3)), np.ones((2, 3)))
     message = str(info.value)
     assert "normal" in message and "view_vector" in message
+
+
+@pytest.mark.parametrize("polygon", [[[0, 0], [1, 0], [2, 1], [0, 2]],     # S on the plane, E out
+                                     [[2, 1], [1, 0], [0, 0], [0, 2]],     # E on the plane, S out
+                                     [[1, -1], [1, 1], [0, 1], [0, -1]]])  # an edge along it
+def test_vertices_on_the_clip_plane_are_not_duplicated(polygon):
+    clipped = C.clip_polygon(polygon, [([1, 0], 1)])                  # keep x <= 1
+    rolled = np.roll(clipped, -1, axis=0)
+    assert not np.any(np.all(np.isclose(clipped, rolled), axis=1)), clipped
+    expected = shapely.Polygon(polygon).intersection(shapely.box(-5, -5, 1, 5)).area
+    x, y = clipped.T
+    assert 0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))) == \
+        pytest.approx(expected)
