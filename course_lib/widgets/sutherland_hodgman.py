@@ -75,7 +75,7 @@ def scene(state):
     --------
     >>> s = scene(State(step=1))
     >>> s["side"], len(s["before"]), len(s["after"])
-    ('left', 6, 7)
+    ('left', 6, 6)
     """
     steps = clipping.sutherland_hodgman_steps(state.polygon, BOX_MIN, BOX_MAX)
     k = min(max(int(state.step), 0), len(steps))
