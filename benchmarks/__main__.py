@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-CHAPTERS = ["benchmarks.ch03", "benchmarks.ch04", "benchmarks.ch05"]
+CHAPTERS = ["benchmarks.ch03", "benchmarks.ch04", "benchmarks.ch05", "benchmarks.ch07"]
 HERE = Path(__file__).resolve().parent
 
 

@@ -17,7 +17,8 @@ ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOK_DIRS = ("notebooks", "solutions", "exercises")
 ALGORITHM_MODULES = ("course_lib.transforms", "course_lib.quaternions", "course_lib.format",
                      "course_lib.shapes", "course_lib._validate", "course_lib.exercises.core",
-                     "course_lib.viewing", "course_lib.clipping", "course_lib.visibility")
+                     "course_lib.viewing", "course_lib.clipping", "course_lib.visibility",
+                     "course_lib.curves", "course_lib.surfaces")
 DOCUMENTED_MODULES = ALGORITHM_MODULES + (
     "course_lib.draw", "course_lib.exercises.build", "course_lib.exercises.ch03",
     "course_lib.widgets._base", "course_lib.widgets.quaternion", "course_lib.widgets.slerp",
