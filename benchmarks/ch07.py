@@ -96,5 +96,34 @@ def operations(quick=False):
 
 
 def widgets(quick=False):
-    """The chapter's widget rows are added with the widgets."""
-    return []
+    """Median update of each editor while the student drags (10 control points, 200 samples
+    for the Bézier editor; 10 points and 300 samples for the B-spline one; target 30 ms)."""
+    import matplotlib
+
+    matplotlib.use("module://ipympl.backend_nbagg")
+    import matplotlib.pyplot as plt
+
+    from benchmarks import widget_row
+    from course_lib.widgets import bezier, bspline, surface
+
+    repeat = 5 if quick else 40
+    rows = []
+    for name, explorer in (("Bézier editor, 10 points (drag)", bezier.BezierExplorer()),
+                           ("B-spline / NURBS editor, 10 points (drag)",
+                            bspline.BSplineExplorer())):
+        while len(explorer.state.points) < 10:
+            explorer.add_point()
+        explorer.fig.canvas.draw()
+        start = explorer.state.points[4].copy()
+        explorer.drag.press(*start)
+
+        def move(i, explorer=explorer, start=start):
+            explorer.drag.move(start[0] + 0.4 * np.cos(0.3 * i), start[1] + 0.4 * np.sin(0.3 * i))
+        rows.append(widget_row(name, move, explorer.fig.canvas.draw, repeat, target_ms=30.0))
+        plt.close(explorer.fig)
+    explorer = surface.SurfaceExplorer()
+    rows.append(widget_row("surface explorer (lift slider, pyvista off screen)",
+                           lambda i: setattr(explorer.lift, "value", -1.0 + 0.05 * (i % 40)),
+                           lambda: explorer.png(), repeat))
+    explorer.plotter.close()
+    return rows

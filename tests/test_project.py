@@ -26,7 +26,8 @@ DOCUMENTED_MODULES = ALGORITHM_MODULES + (
     "course_lib.widgets.cohen_sutherland", "course_lib.widgets.liang_barsky",
     "course_lib.widgets.sutherland_hodgman", "course_lib.widgets.clipping3d",
     "course_lib.widgets.zbuffer", "course_lib.widgets.hidden_surface",
-    "course_lib.widgets._drag")
+    "course_lib.widgets._drag", "course_lib.widgets.bezier", "course_lib.widgets.bspline",
+    "course_lib.widgets.surface")
 
 
 def all_notebooks():

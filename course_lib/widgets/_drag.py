@@ -22,6 +22,10 @@ class DraggablePoints:
         ``on_move(index, xy)`` after every move.
     radius : float
         The pick tolerance in pixels.
+    on_press : callable, optional
+        ``on_press(index)`` when a point is picked up (e.g. to select it).
+    on_release : callable, optional
+        ``on_release()`` when a dragged point is dropped.
 
     Examples
     --------
@@ -36,10 +40,12 @@ class DraggablePoints:
     [(0, [0.5, 0.6])]
     """
 
-    def __init__(self, ax, points, on_move, radius=12.0):
+    def __init__(self, ax, points, on_move, radius=12.0, on_press=None, on_release=None):
         self.ax = ax
         self.points = np.array(points, dtype=float)
         self.on_move = on_move
+        self.on_press = on_press
+        self.on_release = on_release
         self.radius = radius
         self.active = None
         canvas = ax.figure.canvas
@@ -56,6 +62,8 @@ class DraggablePoints:
         distance = np.hypot(*(screen - at).T)
         k = int(np.argmin(distance))
         self.active = k if distance[k] <= self.radius else None
+        if self.active is not None and self.on_press is not None:
+            self.on_press(self.active)
 
     def move(self, x, y):
         """Move the picked-up point to (x, y), clamped to the axes."""
@@ -67,7 +75,10 @@ class DraggablePoints:
 
     def release(self):
         """Drop the point."""
+        dropped = self.active is not None
         self.active = None
+        if dropped and self.on_release is not None:
+            self.on_release()
 
     def set_points(self, points):
         """Replace the positions (e.g. after a preset), without calling ``on_move``."""
