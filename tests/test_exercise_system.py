@@ -7,8 +7,9 @@ import pytest
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
 
 from course_lib.exercises import build
-from course_lib.exercises.core import (Exercise, Feedback, Mistake, diagnose_matrix,
-                                       diagnose_number, diagnose_vector)
+from course_lib.exercises.core import (DrawnExercise, Exercise, Feedback, Mistake,
+                                       diagnose_matrix, diagnose_number, diagnose_parts,
+                                       diagnose_vector, gap, read_floats, well_separated)
 
 R90 = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])   # 2D rotation by 90°
 M = np.array([[2.0, -1.0, 3.0], [1.0, 2.0, -1.0], [0.0, 0.0, 1.0]])
@@ -61,6 +62,48 @@ def test_homogeneous_matrix_asked_but_3x3_given():
 def test_projective_matrices_accept_any_multiple():
     assert diagnose_matrix(-3 * M, M, homogeneous_scale=True).status == "correct"
     assert diagnose_matrix(-3 * M, M).status == "wrong"
+
+
+def test_projective_mistakes_are_recognised_in_any_multiple():
+    """A projective matrix and its multiples are the same transformation: so are the slips."""
+    slip = M.copy()
+    slip[2, :2] = [1.0, -2.0]
+    mistakes = [Mistake(slip, "The bottom row is off.", "bottom row")]
+    for factor in (1.0, -1.0, 2.5, -0.5):
+        feedback = diagnose_matrix(np.round(factor * slip, 3), M, mistakes,
+                                   homogeneous_scale=True)
+        assert (feedback.status, feedback.diagnosis) == ("wrong", "bottom row"), factor
+    assert diagnose_matrix(2.5 * slip, M, mistakes).diagnosis != "bottom row"
+    assert diagnose_matrix(0 * slip, M, mistakes, homogeneous_scale=True).diagnosis \
+        != "bottom row"                                    # zero is no multiple
+    same = [Mistake(-2 * M, "A multiple of the answer.", "multiple")]
+    assert diagnose_matrix(-2 * M, M, same, homogeneous_scale=True).status == "correct"
+
+
+@pytest.mark.parametrize("answer, diagnosis, transform_words", [
+    (M.T, "transposed", "column vectors"),
+    (M * [[1, -1, 1], [1, 1, 1], [1, 1, 1]], "sign", "rotation"),
+])
+def test_generic_matrix_feedback_for_arrays_that_are_not_transformations(answer, diagnosis,
+                                                                         transform_words):
+    transformation = diagnose_matrix(answer, M)
+    table = diagnose_matrix(answer, M, what="the table", transform=False)
+    assert transformation.diagnosis == table.diagnosis == diagnosis
+    assert transform_words in transformation.message
+    assert transform_words not in table.message and "sin" not in table.message
+    assert table.message.startswith({"transposed": "The table is transposed: rows and columns "
+                                                   "are swapped.",
+                                     "sign": "Right magnitudes but the wrong sign in entries "
+                                             "(0, 1) (row, column"}[diagnosis])
+
+
+def test_arrays_that_are_not_transformations_are_not_called_inverse_or_homogeneous():
+    assert diagnose_matrix(np.linalg.inv(M), M).diagnosis == "inverse"
+    assert diagnose_matrix(np.linalg.inv(M), M, transform=False).diagnosis == "entries differ"
+    assert "homogeneous" in diagnose_matrix(np.eye(3), np.eye(4)).message
+    assert "homogeneous" not in diagnose_matrix(np.eye(3), np.eye(4), transform=False).message
+    scaled = diagnose_matrix(2 * M, M, what="the table", transform=False)
+    assert scaled.diagnosis == "scaled" and scaled.message.startswith("The table is 2 times")
 
 
 @pytest.mark.parametrize("answer, kwargs, diagnosis", [
@@ -117,6 +160,152 @@ def test_exercise_seed_chooses_the_variant():
         Twice(seed="7")
 
 
+class Thrice(Twice):
+    title = "Thrice"            # the same draw as Twice, under another name
+
+
+def test_each_exercise_class_draws_from_a_stream_of_its_own():
+    """Exercises that share one SEED in a notebook do not share their numbers."""
+    assert [Thrice(seed=s).x for s in range(5)] == [Thrice(seed=s).x for s in range(5)]
+    assert [Thrice(seed=s).x for s in range(5)] != [Twice(seed=s).x for s in range(5)]
+
+
+# --- drawn exercises -------------------------------------------------------------------------
+
+class Sum(DrawnExercise):
+    """a + b; the slips: a - b, and a * b (which equals a + b for a = b = 2)."""
+    title = "A sum"
+    answer_form = "number"
+    what = "the sum"
+
+    def draw(self, rng):
+        self.a, self.b = (int(v) for v in rng.integers(0, 4, size=2))
+        self.expected = self.a + self.b
+
+    def mistakes(self):
+        return [Mistake(self.a - self.b, "You subtracted.", "subtracted"),
+                Mistake(self.a * self.b, "You multiplied.", "multiplied")]
+
+    def statement(self):
+        return f"What is ${self.a} + {self.b}$?"
+
+
+class SumMayCoincide(Sum):
+    may_coincide = ("multiplied",)
+
+
+def test_drawn_exercise_redraws_until_the_mistakes_are_distinct():
+    for seed in range(100):
+        ex = Sum(seed=seed)
+        values = [ex.expected, ex.a - ex.b, ex.a * ex.b]
+        assert len(set(values)) == 3, (seed, values)     # b = 0, a = 0 or a = b = 2 never
+        assert ex.check(ex.a * ex.b).diagnosis == "multiplied"
+        assert ex.check(ex.a - ex.b).diagnosis == "subtracted"
+        assert ex.check(ex.expected).status == "correct"
+
+
+def test_a_mistake_that_may_coincide_is_dropped_where_it_does():
+    coinciding = [ex for ex in map(SumMayCoincide, range(300)) if ex.a == ex.b == 2]
+    assert coinciding, "no variant with a = b = 2 among 300 seeds"
+    for ex in coinciding:
+        assert [m.key for m in ex._mistakes] == ["subtracted"]
+        assert ex.check(4).status == "correct"
+
+
+class Impossible(Sum):
+    def mistakes(self):
+        return [Mistake(self.expected, "Always right.", "always")]
+
+
+def test_drawn_exercise_gives_up_with_a_clear_error():
+    with pytest.raises(RuntimeError, match="Impossible: found no variant"):
+        Impossible(seed=0)
+
+
+class Rotation(DrawnExercise):
+    title = "A quaternion"
+    answer_form = "quaternion"
+    what = "the quaternion"
+
+    def draw(self, rng):
+        self.expected = np.array([0.5, 0.5, 0.5, 0.5]) * rng.choice([-1.0, 1.0], size=4)
+
+    def mistakes(self):
+        return [Mistake(self.expected * [1, -1, -1, -1], "The conjugate.", "conjugate")]
+
+    def statement(self):
+        return "?"
+
+
+class Projected(DrawnExercise):
+    title = "A projected point"
+    answer_form = "point"
+    projective_point = True
+    what = "the point"
+
+    def draw(self, rng):
+        self.expected = np.array([1.0, 2.0, 3.0]) + rng.integers(0, 3)
+
+    def statement(self):
+        return "?"
+
+
+class Table(DrawnExercise):
+    title = "A table"
+    answer_form = "custom"
+
+    def draw(self, rng):
+        self.expected = np.arange(4.0) + rng.integers(0, 3)
+
+    def statement(self):
+        return "?"
+
+
+def test_drawn_exercise_checks_by_answer_form():
+    q = Rotation(seed=1)
+    assert q.check(-q.expected).status == "correct"
+    assert q.check(-q.expected * [1, -1, -1, -1]).diagnosis == "conjugate"
+    assert q.check(2 * q.expected).diagnosis == "not normalized"
+    p = Projected(seed=1)
+    assert p.check(np.append(p.expected, 1)).status == "correct"
+    assert p.check(np.append(2 * p.expected, 2)).diagnosis == "no divide"
+    assert p.check(p.expected + 1).status == "wrong"
+    # a form of its own without a _check: reported, never raised
+    assert Table(seed=1).check([0, 1, 2, 3]).status == "invalid"
+
+
+def test_drawn_exercise_check_never_raises():
+    for answer in (object(), {1, 2}, b"x", 1j, [[[]]], [None] * 3, [1, "a"]):
+        for ex in (Sum(seed=2), Rotation(seed=2), Projected(seed=2)):
+            assert ex.check(answer).status in ("invalid", "wrong", "unanswered"), (ex, answer)
+
+
+def test_separation_helpers():
+    assert gap([1, 2], [1, 2.5]) == 0.5 and gap([1], [1, 2]) == math.inf
+    assert gap([1, 0], [-1, 0], sign_free=True) == 0.0
+    assert gap([3, 6], [1, 2], projective=True) == 0.0 and gap([3, 6], [1, 2]) == 4.0
+    right = np.array([1.0, 2.0])
+    assert well_separated(right, [Mistake([2, 1], "", "a"), Mistake([3, 3], "", "b")])
+    assert not well_separated(right, [Mistake([2, 1], "", "a"), Mistake([2, 1.01], "", "b")])
+    # the same slip may be listed twice (e.g. two ways to reach it)
+    assert well_separated(right, [Mistake([2, 1], "", "a"), Mistake([2, 1], "", "a")])
+    assert not well_separated(right, [Mistake(-right, "", "a")], sign_free=True)
+    assert not well_separated(right, [Mistake([2, 1], "", "a"), Mistake([4, 2], "", "b")],
+                              projective=True)
+    assert read_floats([[1, 2], [3]]) is None and read_floats({1.0}) is None
+    assert read_floats((1, 2)).tolist() == [1.0, 2.0]
+
+
+def test_diagnose_parts_names_the_slip_and_the_numbers():
+    parts = [("the first", 1.0, [Mistake(-1.0, "Sign slip in the first number.", "sign")]),
+             ("the second", 2.0, [])]
+    feedback = diagnose_parts([-1, 2], parts, "your answer", "`[a, b]`")
+    assert (feedback.status, feedback.diagnosis) == ("wrong", "sign")
+    assert "Right: the second." in feedback.message
+    assert diagnose_parts([1, 3], parts, "your answer", "`[a, b]`").diagnosis == "value differs"
+    assert diagnose_parts([1], parts, "your answer", "`[a, b]`").status == "invalid"
+
+
 # --- the builder -----------------------------------------------------------------------------
 
 def test_strip_code_keeps_the_names_the_cell_uses_and_the_indentation():
@@ -127,6 +316,53 @@ def test_strip_code_keeps_the_names_the_cell_uses_and_the_indentation():
            "    ### END SOLUTION\n"
            "ex.check(M)")
     assert build.strip_code(src) == "a = 1\n    # YOUR ANSWER HERE\n    M = ...\nex.check(M)"
+
+
+@pytest.mark.parametrize("body, name", [
+    ("if a > 0:\n    M = a\nelse:\n    M = -a", "M"),
+    ("for M in range(3):\n    pass", "M"),
+    ("for i, (M, k) in enumerate([(1, 2)]):\n    pass", "M"),
+    ("while True:\n    M = 1\n    break", "M"),
+    ("with open(__file__) as M:\n    pass", "M"),
+    ("with open(__file__) as f:\n    M = f.read()", "M"),
+    ("try:\n    M = 1 / a\nexcept ZeroDivisionError:\n    M = 0", "M"),
+    ("try:\n    pass\nfinally:\n    M = 1", "M"),
+    ("if a:\n    for k in range(2):\n        if k:\n            M = k", "M"),
+    ("if (M := a + 1) > 0:\n    pass", "M"),
+])
+def test_strip_code_finds_assignments_inside_compound_statements(body, name):
+    """A name assigned inside an if/for/with/try still gets its `name = ...` placeholder."""
+    src = "### BEGIN SOLUTION\n" + body + "\n### END SOLUTION\nex.check(M)"
+    assert build.strip_code(src) == f"# YOUR ANSWER HERE\n{name} = ...\nex.check(M)"
+
+
+def test_placeholders_follow_the_order_of_first_assignment():
+    src = ("### BEGIN SOLUTION\nif a:\n    B = 1\nelse:\n    A = 2\nfor C in []:\n    pass\n"
+           "### END SOLUTION\nex.check(C, A, B)")
+    assert build.strip_code(src) == ("# YOUR ANSWER HERE\nB = ...\nA = ...\nC = ...\n"
+                                     "ex.check(C, A, B)")
+
+
+@pytest.mark.parametrize("body", [
+    "def f():\n    M = 1\n    return M",
+    "class K:\n    M = 1",
+    "values = [M for M in range(3)]",
+    "values = {M: 1 for M in range(3)}",
+    "values = list(M for M in range(3))",
+    "values = [(M := k) for k in range(3)]",
+    "f = lambda M=1: M",
+])
+def test_strip_code_ignores_names_local_to_functions_classes_and_comprehensions(body):
+    src = "### BEGIN SOLUTION\n" + body + "\n### END SOLUTION\nex.check(M)"
+    assert build.strip_code(src) == "# YOUR ANSWER HERE\nex.check(M)"
+
+
+def test_a_stripped_region_with_compound_statements_runs():
+    src = ("a = 3\n### BEGIN SOLUTION\nif a > 0:\n    M = a\nelse:\n    M = -a\n"
+           "for k in range(2):\n    total = k\n### END SOLUTION\nresult = (M, total)")
+    namespace = {}
+    exec(build.strip_code(src), namespace)
+    assert namespace["result"] == (..., ...)
 
 
 def test_strip_code_without_later_use_leaves_a_comment_only():

@@ -63,23 +63,45 @@ def _regions(lines, begin, end, where):
                                   f"is never closed with {end!r}")
 
 
+#: Nodes with a scope of their own: what they assign is not visible after the region.
+_OWN_SCOPE = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda, ast.ListComp,
+              ast.SetComp, ast.DictComp, ast.GeneratorExp)
+
+
+def _targets(node):
+    """The assignment targets of one node (empty for a node that assigns nothing)."""
+    if isinstance(node, ast.Assign):
+        return node.targets
+    if isinstance(node, (ast.AnnAssign, ast.AugAssign, ast.For, ast.AsyncFor, ast.NamedExpr)):
+        return [node.target]
+    if isinstance(node, (ast.With, ast.AsyncWith)):
+        return [item.optional_vars for item in node.items if item.optional_vars is not None]
+    return []
+
+
 def _assigned_names(code):
-    """Names bound at the top level of `code`, in order of first assignment."""
+    """Names `code` assigns, at any depth of its statements, in order of first assignment.
+
+    Assignments inside ``if``, ``for``, ``while``, ``with`` and ``try`` count, and so do the
+    targets of ``for`` loops and ``with ... as name``; those in the bodies of functions and
+    classes, and in comprehensions, do not (they are not visible after the code).
+    """
     names = []
     try:
         tree = ast.parse(code)
     except SyntaxError:
         return names
-    for node in tree.body:
-        targets = []
-        if isinstance(node, ast.Assign):
-            targets = node.targets
-        elif isinstance(node, (ast.AnnAssign, ast.AugAssign)):
-            targets = [node.target]
-        for target in targets:
+
+    def visit(node):
+        for target in _targets(node):
             for sub in ast.walk(target):
                 if isinstance(sub, ast.Name) and sub.id not in names:
                     names.append(sub.id)
+        for child in ast.iter_child_nodes(node):
+            if not isinstance(child, _OWN_SCOPE):
+                visit(child)
+
+    visit(tree)
     return names
 
 

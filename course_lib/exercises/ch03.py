@@ -11,7 +11,7 @@ The expected answers are computed with :mod:`course_lib.transforms` and
 product in the wrong order, a transposed matrix, the full angle in a quaternion, ...) and names
 them in the feedback. The numbers are drawn again until every anticipated mistake gives an answer
 that differs clearly from the right one and from the other mistakes, so a diagnosis is never
-ambiguous.
+ambiguous (:class:`~course_lib.exercises.core.DrawnExercise`).
 
 Conventions: column vectors (:math:`p' = M p`), angles positive counter-clockwise, quaternions
 scalar first :math:`(s, x, y, z)`.
@@ -23,8 +23,8 @@ import numpy as np
 from .. import format as fmt
 from .. import quaternions as quat
 from .. import transforms as tf
-from .core import (Exercise, Feedback, Mistake, diagnose_matrix, diagnose_number,
-                   diagnose_vector, is_unanswered)
+from .core import (DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, data_note, gap,
+                   is_unanswered, pick, read_floats, small_ints)
 
 __all__ = [
     "EXERCISES",
@@ -70,25 +70,7 @@ _SHEARS = {
     "yz": (tf.shear_yz, "x", ("y", "z")),
 }
 
-#: Answers closer than this count as "the same" when the variants are drawn; anticipated mistakes
-#: must be further apart than _APART from the right answer and from each other.
-_SAME, _APART = 1e-9, 0.05
-_MAX_DRAWS = 500
-
-_DECIMALS = "Give at least 3 decimals (or let numpy compute them)."
-
-
-def _pick(rng, options):
-    """One element of the sequence `options`, drawn with `rng`."""
-    return options[int(rng.integers(len(options)))]
-
-
-def _small_ints(rng, n, low=-3, high=3):
-    """A non-zero vector of `n` whole numbers in [low, high], as floats."""
-    while True:
-        v = rng.integers(low, high + 1, size=n).astype(float)
-        if np.any(v):
-            return v
+_vec = fmt.vector_latex
 
 
 def _signs(rng, n):
@@ -97,7 +79,7 @@ def _signs(rng, n):
 
 def _nice_axis(rng):
     """A whole-number direction with a whole length, permuted and with random signs."""
-    return rng.permutation(np.array(_pick(rng, _NICE_AXES), dtype=float)) * _signs(rng, 3)
+    return rng.permutation(np.array(pick(rng, _NICE_AXES), dtype=float)) * _signs(rng, 3)
 
 
 def _nice_quaternion(rng, zero_scalar=False):
@@ -106,22 +88,18 @@ def _nice_quaternion(rng, zero_scalar=False):
     With `zero_scalar` the scalar part is 0 (a turn by 180 degrees).
     """
     if zero_scalar:
-        ints, n = _pick(rng, [entry for entry in _NICE_QUATERNIONS if 0 in entry[0]])
+        ints, n = pick(rng, [entry for entry in _NICE_QUATERNIONS if 0 in entry[0]])
         rest = list(ints)
         rest.remove(0)
         v = np.concatenate([[0.0], rng.permutation(np.array(rest, dtype=float))])
     else:
-        ints, n = _pick(rng, _NICE_QUATERNIONS)
+        ints, n = pick(rng, _NICE_QUATERNIONS)
         v = rng.permutation(np.array(ints, dtype=float))
     return v * _signs(rng, 4), n
 
 
 def _deg(angle_deg):
     return rf"{angle_deg}^\circ"
-
-
-def _vec(v):
-    return fmt.vector_latex(v)
 
 
 def _fraction_vector(ints, n):
@@ -137,125 +115,11 @@ def _fraction_matrix(m, n2):
     return rf"\frac{{1}}{{{n2}}}{fmt.matrix_latex(whole)}"
 
 
-def _data_note(*names):
-    listed = ", ".join(f"`.{name}`" for name in names)
-    return f"*The numbers of this question are the attributes {listed} of the exercise object.*"
-
-
-# ---------------------------------------------------------------------------------------------
-# Telling the anticipated mistakes apart
-# ---------------------------------------------------------------------------------------------
-
-def _gap(a, b, sign_free=False):
-    """Largest componentwise difference of `a` and `b` (up to sign when `sign_free`)."""
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    if a.shape != b.shape:
-        return math.inf
-    gap = float(np.abs(a - b).max())
-    if sign_free:
-        gap = min(gap, float(np.abs(a + b).max()))
-    return gap
-
-
-def _well_separated(expected, mistakes, sign_free=False, may_coincide=()):
-    """True when every anticipated mistake can be told apart from the answer and the others.
-
-    A mistake whose key is in `may_coincide` may give exactly the right answer in some variants
-    (then it is simply right); otherwise each mistake must differ from the right answer, and the
-    mistakes from each other, by more than the rounding of a hand computation.
-    """
-    live = []
-    for mistake in mistakes:
-        gap = _gap(mistake.value, expected, sign_free)
-        if gap <= _SAME and mistake.key in may_coincide:
-            continue
-        if gap < _APART:
-            return False
-        live.append(mistake)
-    for i, mistake in enumerate(live):
-        for other in live[i + 1:]:
-            if _gap(mistake.value, other.value, sign_free) < _APART:
-                return False
-    return True
-
-
-def _with_negatives(mistakes):
-    """The mistakes and their negatives: a quaternion and its negative are the same rotation."""
-    return list(mistakes) + [Mistake(-m.value, m.explanation, m.key) for m in mistakes]
-
-
-def _read_floats(value):
-    """`value` as a finite float array, or None when it cannot be read."""
-    if value is None or value is Ellipsis or isinstance(value, (str, bytes, dict)):
-        return None
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        return None
-    return arr if np.isfinite(arr).all() else None
-
-
-class _Chapter3Exercise(Exercise):
-    """Shared machinery: draw until the mistakes are distinct, then check by answer form.
-
-    Subclasses implement ``draw(rng)`` (set the question's attributes and ``expected``),
-    ``mistakes()`` (a list of :class:`~course_lib.exercises.core.Mistake` computed from the
-    question) and ``statement()``; they set ``answer_form`` to ``"matrix"``, ``"vector"``,
-    ``"quaternion"`` (a unit quaternion, q and -q both right) or ``"number"``. The mistakes of
-    the accepted variant are computed once, in ``setup``, and reused by every ``check``.
-    """
-
-    answer_form = "matrix"
-    what = "the matrix"
-    may_coincide = ()
-
-    def setup(self, rng):
-        sign_free = self.answer_form == "quaternion"
-        for _ in range(_MAX_DRAWS):
-            self.draw(rng)
-            mistakes = self.mistakes()
-            if _well_separated(self.expected, mistakes, sign_free, self.may_coincide):
-                self._mistakes = mistakes
-                return
-        raise RuntimeError(f"{type(self).__name__}: found no variant whose anticipated mistakes "
-                           "are distinct")
-
-    def draw(self, rng):
-        """Draw the numbers of the question and compute ``self.expected``."""
-        raise NotImplementedError
-
-    def mistakes(self):
-        """The anticipated wrong answers, computed from the question."""
-        return []
-
-    def check(self, answer):
-        """Judge `answer` and say what is wrong with it; never raises.
-
-        Parameters
-        ----------
-        answer : object
-            The student's answer in the form the statement asks for.
-
-        Returns
-        -------
-        Feedback
-        """
-        mistakes = self._mistakes
-        if self.answer_form == "matrix":
-            return diagnose_matrix(answer, self.expected, mistakes, what=self.what)
-        if self.answer_form == "vector":
-            return diagnose_vector(answer, self.expected, mistakes, what=self.what)
-        if self.answer_form == "quaternion":
-            return diagnose_vector(answer, self.expected, _with_negatives(mistakes),
-                                   what=self.what, unit=True, sign_free=True)
-        return diagnose_number(answer, self.expected, mistakes, what=self.what)
-
-
 _MATRIX_3 = ("**Answer:** the homogeneous $3 \\times 3$ matrix as a numpy array, "
-             "`np.array([[...], [...], [...]])`. " + _DECIMALS)
-_MATRIX_4 = ("**Answer:** the homogeneous $4 \\times 4$ matrix as a numpy array. " + _DECIMALS)
-_POINT_3 = ("**Answer:** the image point as a list of 3 numbers `[x, y, z]`. " + _DECIMALS)
-_QUATERNION = ("**Answer:** a list of 4 numbers, **scalar first**: `[s, x, y, z]`. " + _DECIMALS)
+             "`np.array([[...], [...], [...]])`. " + DECIMALS)
+_MATRIX_4 = ("**Answer:** the homogeneous $4 \\times 4$ matrix as a numpy array. " + DECIMALS)
+_POINT_3 = ("**Answer:** the image point as a list of 3 numbers `[x, y, z]`. " + DECIMALS)
+_QUATERNION = ("**Answer:** a list of 4 numbers, **scalar first**: `[s, x, y, z]`. " + DECIMALS)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -265,7 +129,7 @@ _QUATERNION = ("**Answer:** a list of 4 numbers, **scalar first**: `[s, x, y, z]
 _SCALES_2D = (2.0, 3.0, 0.5, -1.0, -2.0)
 
 
-class ComposeMatrix2D(_Chapter3Exercise):
+class ComposeMatrix2D(DrawnExercise):
     r"""Compose a scaling, a rotation and a translation into one 2D homogeneous matrix.
 
     The points are scaled by :math:`S(s_x, s_y)`, then rotated by :math:`\theta` about the
@@ -291,9 +155,9 @@ class ComposeMatrix2D(_Chapter3Exercise):
 
     def draw(self, rng):
         self.sx, self.sy = (float(v) for v in rng.choice(_SCALES_2D, size=2, replace=False))
-        self.theta_deg = int(_pick(rng, _ANGLES_2D))
+        self.theta_deg = int(pick(rng, _ANGLES_2D))
         self.theta = math.radians(self.theta_deg)
-        self.d = _small_ints(rng, 2)
+        self.d = small_ints(rng, 2)
         self.expected = tf.compose(self._scale(), tf.rotate(self.theta), tf.translate(self.d))
 
     def _scale(self):
@@ -336,11 +200,11 @@ class ComposeMatrix2D(_Chapter3Exercise):
             rf"$\theta = {_deg(self.theta_deg)}$ (counter-clockwise for a positive angle), and "
             rf"finally translated by $d = {_vec(self.d)}$." "\n\n"
             rf"Give the single matrix $M$ with $p' = M\,p$ that does all three steps." "\n\n"
-            + _MATRIX_3 + "\n\n" + _data_note("sx", "sy", "theta_deg", "theta", "d")
+            + _MATRIX_3 + "\n\n" + data_note("sx", "sy", "theta_deg", "theta", "d")
             + " (`.theta` is in radians.)")
 
 
-class RotateAboutPoint(_Chapter3Exercise):
+class RotateAboutPoint(DrawnExercise):
     r"""The 2D rotation by :math:`\theta` about a point :math:`c`: :math:`T(c)\,R(\theta)\,T(-c)`.
 
     Attributes: ``theta_deg``, ``theta`` (radians), ``c``.
@@ -361,9 +225,9 @@ class RotateAboutPoint(_Chapter3Exercise):
     title = "Rotation about a point (2D)"
 
     def draw(self, rng):
-        self.theta_deg = int(_pick(rng, _ANGLES_2D))
+        self.theta_deg = int(pick(rng, _ANGLES_2D))
         self.theta = math.radians(self.theta_deg)
-        self.c = _small_ints(rng, 2)
+        self.c = small_ints(rng, 2)
         self.expected = tf.rotate_about(self.theta, self.c)
 
     def mistakes(self):
@@ -390,14 +254,14 @@ class RotateAboutPoint(_Chapter3Exercise):
             rf"Find the homogeneous matrix $M$ of the 2D rotation by "
             rf"$\theta = {_deg(self.theta_deg)}$ (counter-clockwise for a positive angle) about "
             rf"the point $c = {_vec(self.c)}$, so that $p' = M\,p$. The point $c$ must stay "
-            rf"where it is." "\n\n" + _MATRIX_3 + "\n\n" + _data_note("theta_deg", "theta", "c")
+            rf"where it is." "\n\n" + _MATRIX_3 + "\n\n" + data_note("theta_deg", "theta", "c")
             + " (`.theta` is in radians.)")
 
 
 _SCALES_INVERTIBLE = (2.0, 4.0, 0.5, -1.0, -2.0)
 
 
-class InverseOfComposite(_Chapter3Exercise):
+class InverseOfComposite(DrawnExercise):
     r"""The inverse of :math:`M = T(d)\,R(\theta)\,S(s_x, s_y)` in 2D.
 
     :math:`M^{-1} = S(1/s_x, 1/s_y)\,R(-\theta)\,T(-d)`: each factor is inverted and the order
@@ -424,9 +288,9 @@ class InverseOfComposite(_Chapter3Exercise):
     def draw(self, rng):
         self.sx, self.sy = (float(v) for v in rng.choice(_SCALES_INVERTIBLE, size=2,
                                                          replace=False))
-        self.theta_deg = int(_pick(rng, _ANGLES_2D))
+        self.theta_deg = int(pick(rng, _ANGLES_2D))
         self.theta = math.radians(self.theta_deg)
-        self.d = _small_ints(rng, 2)
+        self.d = small_ints(rng, 2)
         self.M = tf.translate(self.d) @ tf.rotate(self.theta) @ tf.scale([self.sx, self.sy])
         self.expected = tf.inverse(self.M)
 
@@ -465,14 +329,14 @@ class InverseOfComposite(_Chapter3Exercise):
             rf"$s_y = {fmt.number(self.sy)}$ (homogeneous 2D matrices, column vectors)." "\n\n"
             rf"Give $M^{{-1}}$, the matrix that undoes $M$. Build it from the inverses of the "
             rf"three factors rather than by a general matrix inversion." "\n\n" + _MATRIX_3
-            + "\n\n" + _data_note("sx", "sy", "theta_deg", "theta", "d", "M")
+            + "\n\n" + data_note("sx", "sy", "theta_deg", "theta", "d", "M")
             + " (`.theta` is in radians; `.M` is the matrix $M$.)")
 
 
 _MIRROR_ANGLES = (30, 45, 60, 120, 135, 150)
 
 
-class MirrorAboutLine(_Chapter3Exercise):
+class MirrorAboutLine(DrawnExercise):
     r"""Mirroring about a line through :math:`c` at angle :math:`\varphi` to the x axis (2D).
 
     .. math:: M = T(c)\,R(\varphi)\,S(1, -1)\,R(-\varphi)\,T(-c)
@@ -495,9 +359,9 @@ class MirrorAboutLine(_Chapter3Exercise):
     title = "Mirroring about a line (2D)"
 
     def draw(self, rng):
-        self.phi_deg = int(_pick(rng, _MIRROR_ANGLES))
+        self.phi_deg = int(pick(rng, _MIRROR_ANGLES))
         self.phi = math.radians(self.phi_deg)
-        self.c = _small_ints(rng, 2)
+        self.c = small_ints(rng, 2)
         self.expected = self._mirror(self.c, self.phi)
 
     @staticmethod
@@ -533,7 +397,7 @@ class MirrorAboutLine(_Chapter3Exercise):
             rf"$\varphi = {_deg(self.phi_deg)}$ with the positive x axis. Give the homogeneous "
             rf"matrix $M$ of the mirroring (reflection) about $\ell$, so that $p' = M\,p$. "
             rf"Mirroring about the x axis is the scaling $S(1, -1)$." "\n\n" + _MATRIX_3
-            + "\n\n" + _data_note("phi_deg", "phi", "c") + " (`.phi` is in radians.)")
+            + "\n\n" + data_note("phi_deg", "phi", "c") + " (`.phi` is in radians.)")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -550,7 +414,7 @@ def _shear(kind, a, b):
     return _SHEARS[kind][0](a, b)
 
 
-class ShearInverse(_Chapter3Exercise):
+class ShearInverse(DrawnExercise):
     r"""The inverse of a 3D shear: the same shear with negated factors.
 
     Attributes: ``kind`` (``"xy"``, ``"xz"`` or ``"yz"``), ``a``, ``b``.
@@ -569,7 +433,7 @@ class ShearInverse(_Chapter3Exercise):
     title = "Inverse of a 3D shear"
 
     def draw(self, rng):
-        self.kind = str(_pick(rng, tuple(_SHEARS)))
+        self.kind = str(pick(rng, tuple(_SHEARS)))
         self.a, self.b = (float(v) for v in rng.choice([-3, -2, 2, 3], size=2))
         self.expected = tf.inverse(_shear(self.kind, self.a, self.b))
 
@@ -598,10 +462,10 @@ class ShearInverse(_Chapter3Exercise):
             rf"Consider the 3D shear {_shear_words(self.kind)}, with "
             rf"$a = {fmt.number(self.a)}$ and $b = {fmt.number(self.b)}$. Give the homogeneous "
             rf"matrix of its inverse, $SH_{{{self.kind}}}(a, b)^{{-1}}$." "\n\n" + _MATRIX_4
-            + "\n\n" + _data_note("kind", "a", "b"))
+            + "\n\n" + data_note("kind", "a", "b"))
 
 
-class ShearImage(_Chapter3Exercise):
+class ShearImage(DrawnExercise):
     r"""The image of a 3D point under a shear.
 
     Attributes: ``kind`` (``"xy"``, ``"xz"`` or ``"yz"``), ``a``, ``b``, ``p``.
@@ -622,9 +486,9 @@ class ShearImage(_Chapter3Exercise):
     what = "the image point"
 
     def draw(self, rng):
-        self.kind = str(_pick(rng, tuple(_SHEARS)))
+        self.kind = str(pick(rng, tuple(_SHEARS)))
         self.a, self.b = (float(v) for v in rng.choice([-3, -2, -1, 1, 2, 3], size=2))
-        self.p = _small_ints(rng, 3)
+        self.p = small_ints(rng, 3)
         self.expected = tf.apply(_shear(self.kind, self.a, self.b), self.p)
 
     def mistakes(self):
@@ -645,13 +509,13 @@ class ShearImage(_Chapter3Exercise):
             rf"The 3D shear {_shear_words(self.kind)} is applied with "
             rf"$a = {fmt.number(self.a)}$ and $b = {fmt.number(self.b)}$. Where does the point "
             rf"$p = {_vec(self.p)}$ go?" "\n\n" + _POINT_3 + "\n\n"
-            + _data_note("kind", "a", "b", "p"))
+            + data_note("kind", "a", "b", "p"))
 
 
 _BOX_SCALES = (1.0, 2.0, 3.0, 0.5, -1.0, -2.0)
 
 
-class ShearedBoxVolume(_Chapter3Exercise):
+class ShearedBoxVolume(DrawnExercise):
     r"""The volume of a box after a shear and a scaling: :math:`|\det M|` times the old volume.
 
     A shear has determinant 1 and keeps volumes; the scaling multiplies them by
@@ -676,7 +540,7 @@ class ShearedBoxVolume(_Chapter3Exercise):
 
     def draw(self, rng):
         self.w, self.h, self.l = (float(v) for v in rng.integers(1, 5, size=3))
-        self.kind = str(_pick(rng, tuple(_SHEARS)))
+        self.kind = str(pick(rng, tuple(_SHEARS)))
         self.a, self.b = (float(v) for v in rng.choice([-2, -1, 1, 2], size=2))
         self.sx, self.sy, self.sz = (float(v) for v in rng.choice(_BOX_SCALES, size=3))
         self.expected = self.w * self.h * self.l * abs(np.linalg.det(self._matrix()[:3, :3]))
@@ -711,15 +575,15 @@ class ShearedBoxVolume(_Chapter3Exercise):
             rf"$S({fmt.number(self.sx)}, {fmt.number(self.sy)}, {fmt.number(self.sz)})$"
             + (" (a negative factor mirrors)" if min(self.sx, self.sy, self.sz) < 0 else "")
             + ". What is the volume of the resulting solid?\n\n"
-            rf"**Answer:** one number. " + _DECIMALS + "\n\n"
-            + _data_note("w", "h", "l", "kind", "a", "b", "sx", "sy", "sz"))
+            rf"**Answer:** one number. " + DECIMALS + "\n\n"
+            + data_note("w", "h", "l", "kind", "a", "b", "sx", "sy", "sz"))
 
 
 # ---------------------------------------------------------------------------------------------
 # 3D rotation about an arbitrary axis
 # ---------------------------------------------------------------------------------------------
 
-class RotationAboutArbitraryAxis(_Chapter3Exercise):
+class RotationAboutArbitraryAxis(DrawnExercise):
     r"""Rotate a point about the line through :math:`a` with direction :math:`u`.
 
     The rotation is :math:`T(a)\,R_u(\theta)\,T(-a)`, where :math:`R_u(\theta)` rotates about the
@@ -744,11 +608,11 @@ class RotationAboutArbitraryAxis(_Chapter3Exercise):
     what = "the rotated point"
 
     def draw(self, rng):
-        self.a = _small_ints(rng, 3, -2, 2)
+        self.a = small_ints(rng, 3, -2, 2)
         self.u = _nice_axis(rng)
-        self.theta_deg = int(_pick(rng, _ANGLES_3D))
+        self.theta_deg = int(pick(rng, _ANGLES_3D))
         self.theta = math.radians(self.theta_deg)
-        self.p = _small_ints(rng, 3, -2, 2)
+        self.p = small_ints(rng, 3, -2, 2)
         self.expected = tf.apply(tf.rotate_axis(self.u, self.theta, self.a), self.p)
 
     def mistakes(self):
@@ -777,7 +641,7 @@ class RotationAboutArbitraryAxis(_Chapter3Exercise):
             rf"$p = {_vec(self.p)}$ by $\theta = {_deg(self.theta_deg)}$ about this axis "
             rf"(counter-clockwise when seen from the tip of $u$ looking back along the "
             rf"axis)." "\n\n"
-            + _POINT_3 + "\n\n" + _data_note("a", "u", "theta_deg", "theta", "p")
+            + _POINT_3 + "\n\n" + data_note("a", "u", "theta_deg", "theta", "p")
             + " (`.theta` is in radians.)")
 
 
@@ -796,7 +660,7 @@ _SCALAR_LAST_TEXT = (r"You wrote the scalar part last, $(x, y, z, s)$ (scipy's o
                      r"textbook and this course write it first: $q = (s, x, y, z)$.")
 
 
-class QuaternionFromAxisAngle(_Chapter3Exercise):
+class QuaternionFromAxisAngle(DrawnExercise):
     r"""The unit quaternion of a rotation: :math:`(\cos\frac\theta2, \sin\frac\theta2\,\hat n)`.
 
     Attributes: ``axis`` (not of unit length), ``theta_deg``, ``theta`` (radians).
@@ -818,7 +682,7 @@ class QuaternionFromAxisAngle(_Chapter3Exercise):
 
     def draw(self, rng):
         self.axis = _nice_axis(rng)
-        self.theta_deg = int(_pick(rng, _QUATERNION_ANGLES))
+        self.theta_deg = int(pick(rng, _QUATERNION_ANGLES))
         self.theta = math.radians(self.theta_deg)
         self.expected = quat.from_axis_angle(self.axis, self.theta)
 
@@ -854,14 +718,14 @@ class QuaternionFromAxisAngle(_Chapter3Exercise):
             rf"about the axis through the origin with direction $u = {_vec(self.axis)}$ (not of "
             rf"unit length)." "\n\n" + _QUATERNION
             + r" Both $q$ and $-q$ are accepted: they describe the same rotation." + "\n\n"
-            + _data_note("axis", "theta_deg", "theta") + " (`.theta` is in radians.)")
+            + data_note("axis", "theta_deg", "theta") + " (`.theta` is in radians.)")
 
 
 def _quaternion_text(q):
     return _vec(q)
 
 
-class QuaternionProduct(_Chapter3Exercise):
+class QuaternionProduct(DrawnExercise):
     r"""The Hamilton product of two quaternions with whole-number components.
 
     .. math:: (s_1, v_1)(s_2, v_2) = (s_1 s_2 - v_1 \cdot v_2,\ s_1 v_2 + s_2 v_1 + v_1 \times v_2)
@@ -885,8 +749,8 @@ class QuaternionProduct(_Chapter3Exercise):
     what = "the product"
 
     def draw(self, rng):
-        self.q1 = _small_ints(rng, 4, -2, 3)
-        self.q2 = _small_ints(rng, 4, -2, 3)
+        self.q1 = small_ints(rng, 4, -2, 3)
+        self.q2 = small_ints(rng, 4, -2, 3)
         self.expected = quat.multiply(self.q1, self.q2)
 
     def mistakes(self):
@@ -914,13 +778,13 @@ class QuaternionProduct(_Chapter3Exercise):
             rf"and $q_2 = {_quaternion_text(self.q2)}$, both written scalar first "
             rf"$(s, x, y, z)$. They are not unit quaternions; do not normalize anything." "\n\n"
             r"**Answer:** a list of 4 numbers, **scalar first**: `[s, x, y, z]`." + "\n\n"
-            + _data_note("q1", "q2"))
+            + data_note("q1", "q2"))
 
 
 _ROTATION_ANGLES = (60, 90, 120, 180, 240, -90)
 
 
-class RotatePointWithQuaternion(_Chapter3Exercise):
+class RotatePointWithQuaternion(DrawnExercise):
     r"""Rotate a point with :math:`p' = q\,p\,\bar q`, given the axis and angle.
 
     Attributes: ``axis`` (not of unit length), ``theta_deg``, ``theta`` (radians), ``p``.
@@ -942,9 +806,9 @@ class RotatePointWithQuaternion(_Chapter3Exercise):
 
     def draw(self, rng):
         self.axis = _nice_axis(rng)
-        self.theta_deg = int(_pick(rng, _ROTATION_ANGLES))
+        self.theta_deg = int(pick(rng, _ROTATION_ANGLES))
         self.theta = math.radians(self.theta_deg)
-        self.p = _small_ints(rng, 3, -2, 2)
+        self.p = small_ints(rng, 3, -2, 2)
         self.expected = quat.rotate(quat.from_axis_angle(self.axis, self.theta), self.p)
 
     def mistakes(self):
@@ -978,19 +842,19 @@ class RotatePointWithQuaternion(_Chapter3Exercise):
             rf"direction $u = {_vec(self.axis)}$ (not of unit length): build the unit "
             rf"quaternion $q$ and compute $p' = q\,p\,\bar q$, with $p$ written as the pure "
             rf"quaternion $(0, p)$." "\n\n" + _POINT_3 + "\n\n"
-            + _data_note("axis", "theta_deg", "theta", "p") + " (`.theta` is in radians.)")
+            + data_note("axis", "theta_deg", "theta", "p") + " (`.theta` is in radians.)")
 
 
 def _as_rotation_block(answer):
     """A 4x4 homogeneous rotation given where a 3x3 one is asked, as its 3x3 block."""
-    arr = _read_floats(answer)
+    arr = read_floats(answer)
     if arr is not None and arr.shape == (4, 4) and np.allclose(arr[3], [0, 0, 0, 1]) \
             and np.allclose(arr[:3, 3], 0):
         return arr[:3, :3]
     return answer
 
 
-class QuaternionToMatrix(_Chapter3Exercise):
+class QuaternionToMatrix(DrawnExercise):
     r"""The rotation matrix of a unit quaternion with rational components.
 
     The top-left entry is :math:`1 - 2y^2 - 2z^2` (the compendium prints :math:`1 - 2y^2`).
@@ -1035,16 +899,16 @@ class QuaternionToMatrix(_Chapter3Exercise):
                     r"instead of $2xy - 2sz$).", "factor 2 missing"),
         ]
 
-    def check(self, answer):
-        return super().check(_as_rotation_block(answer))
+    def _check(self, answer):
+        return super()._check(_as_rotation_block(answer))
 
     def statement(self):
         return (
             rf"Give the $3 \times 3$ rotation matrix $R$ of the unit quaternion "
             rf"$q = {_fraction_vector(self.ints, self.n)}$ (scalar first, $(s, x, y, z)$), the "
             rf"matrix with $R\,p = q\,p\,\bar q$ for every point $p$." "\n\n"
-            r"**Answer:** the $3 \times 3$ matrix as a numpy array. " + _DECIMALS + "\n\n"
-            + _data_note("q"))
+            r"**Answer:** the $3 \times 3$ matrix as a numpy array. " + DECIMALS + "\n\n"
+            + data_note("q"))
 
 
 _MATRIX_HINT = (r"Careful: if $s$ turns out to be 0 (a turn by $180^\circ$), a recipe that "
@@ -1052,7 +916,7 @@ _MATRIX_HINT = (r"Careful: if $s$ turns out to be 0 (a turn by $180^\circ$), a r
                 r"diagonal first and divide by that component instead.")
 
 
-class MatrixToQuaternion(_Chapter3Exercise):
+class MatrixToQuaternion(DrawnExercise):
     r"""The unit quaternion of a rotation matrix, including turns by 180 degrees (:math:`s = 0`).
 
     About a third of the seeds give a turn by 180 degrees, where the recipe
@@ -1105,7 +969,7 @@ class MatrixToQuaternion(_Chapter3Exercise):
                                  "divided by 2s"))
         return found
 
-    def check(self, answer):
+    def _check(self, answer):
         if self.half_turn and _has_nan_or_inf(answer):
             return Feedback("invalid", r"Your answer contains NaN or infinity. This matrix is "
                             r"a turn by $180^\circ$, so $s = \frac12\sqrt{1 + m_{00} + m_{11} "
@@ -1113,14 +977,14 @@ class MatrixToQuaternion(_Chapter3Exercise):
                             r"Use the diagonal: $4x^2 = 1 + m_{00} - m_{11} - m_{22}$ (and "
                             r"likewise for $y$, $z$); take the largest, then e.g. "
                             r"$y = (m_{01} + m_{10}) / 4x$.", "division by zero")
-        return super().check(answer)
+        return super()._check(answer)
 
     def statement(self):
         return (
             rf"Give a unit quaternion $q$ of the rotation matrix" "\n\n"
             rf"$$R = {_fraction_matrix(self.R, self._n2)}.$$" "\n\n" + _MATRIX_HINT + "\n\n"
             + _QUATERNION + r" Both $q$ and $-q$ are accepted: they describe the same rotation."
-            + "\n\n" + _data_note("R"))
+            + "\n\n" + data_note("R"))
 
 
 def _has_nan_or_inf(answer):
@@ -1136,7 +1000,7 @@ def _has_nan_or_inf(answer):
 
 def _same_rotation(q1, q2, atol=2e-3):
     """Whether the quaternions are the same rotation (equal up to sign)."""
-    return _gap(q1, q2, sign_free=True) <= atol
+    return gap(q1, q2, sign_free=True) <= atol
 
 
 def _axis_angle_quaternion(axis, angle):
@@ -1144,7 +1008,7 @@ def _axis_angle_quaternion(axis, angle):
     return np.concatenate([[math.cos(half)], math.sin(half) * axis])
 
 
-class AxisAngleOfMatrix(_Chapter3Exercise):
+class AxisAngleOfMatrix(DrawnExercise):
     r"""Axis and angle of a rotation matrix; the answer is the tuple ``(axis, angle_radians)``.
 
     Any description of the same rotation is right: ``(-axis, -angle)``, or the angle plus a
@@ -1169,12 +1033,11 @@ class AxisAngleOfMatrix(_Chapter3Exercise):
     """
 
     title = "Axis and angle of a rotation matrix"
-    answer_form = "axis-angle"
+    answer_form = "custom"
 
-    def setup(self, rng):
+    def draw(self, rng):
         ints, n = _nice_quaternion(rng)
-        while ints[0] == 0 or not np.any(ints[1:]):
-            ints, n = _nice_quaternion(rng)
+        self._ints = ints
         if ints[0] < 0:
             ints = -ints
         self.q = ints / n
@@ -1183,18 +1046,11 @@ class AxisAngleOfMatrix(_Chapter3Exercise):
         axis, angle = quat.to_axis_angle(self.q)
         self.expected = (axis, float(angle))
 
-    def check(self, answer):
-        """Judge ``answer = (axis, angle_radians)`` by the rotation it describes; never raises.
+    def acceptable(self):
+        return self._ints[0] != 0 and bool(np.any(self._ints[1:]))
 
-        Parameters
-        ----------
-        answer : tuple
-            A unit axis (3 numbers) and an angle in radians.
-
-        Returns
-        -------
-        Feedback
-        """
+    def _check(self, answer):
+        """Judge ``answer = (axis, angle_radians)`` by the rotation it describes."""
         parsed = _read_axis_angle(answer)
         if isinstance(parsed, Feedback):
             return parsed
@@ -1247,19 +1103,18 @@ class AxisAngleOfMatrix(_Chapter3Exercise):
             rf"$\hat n$)." "\n\n"
             r"**Answer:** a tuple `(axis, angle)`: `axis` a list of 3 numbers of unit length, "
             r"`angle` in **radians**. Any description of the same rotation is accepted (e.g. "
-            r"$(-\hat n, -\theta)$). " + _DECIMALS + "\n\n" + _data_note("R"))
+            r"$(-\hat n, -\theta)$). " + DECIMALS + "\n\n" + data_note("R"))
 
 
 def _read_axis_angle(answer):
     """``(axis, angle)`` as a float vector and a float, or a Feedback saying why not."""
     if is_unanswered(answer) or (isinstance(answer, (tuple, list)) and len(answer) == 2
                                  and any(is_unanswered(part) for part in answer)):
-        return Feedback("unanswered", "Replace the `...` with your answer and run the cell "
-                        "again.")
+        return Feedback("unanswered", UNANSWERED)
     if not isinstance(answer, (tuple, list)) or len(answer) != 2:
         return Feedback("invalid", "Give a tuple of two things, `(axis, angle)`: the axis as 3 "
                         "numbers and the angle in radians as one number.", "unreadable")
-    axis, angle = (_read_floats(part) for part in answer)
+    axis, angle = (read_floats(part) for part in answer)
     if axis is None or axis.shape != (3,):
         return Feedback("invalid", "The axis (first item) should be 3 numbers, e.g. "
                         "`[0.6, 0, 0.8]`.", "unreadable")
@@ -1273,7 +1128,7 @@ _COMPOSE_ANGLES = (60, 90, 120, 180, -90)
 _COORDINATE_AXES = {"x": (1.0, 0.0, 0.0), "y": (0.0, 1.0, 0.0), "z": (0.0, 0.0, 1.0)}
 
 
-class ComposeRotationsWithQuaternions(_Chapter3Exercise):
+class ComposeRotationsWithQuaternions(DrawnExercise):
     r"""Two rotations one after the other as one quaternion: first :math:`q_1`, then :math:`q_2`.
 
     The combined rotation is :math:`q_2\,q_1`, because
@@ -1303,8 +1158,8 @@ class ComposeRotationsWithQuaternions(_Chapter3Exercise):
         self.axis1_name, self.axis2_name = str(name1), str(name2)
         self.axis1 = np.array(_COORDINATE_AXES[self.axis1_name])
         self.axis2 = np.array(_COORDINATE_AXES[self.axis2_name])
-        self.theta1_deg = int(_pick(rng, _COMPOSE_ANGLES))
-        self.theta2_deg = int(_pick(rng, _COMPOSE_ANGLES))
+        self.theta1_deg = int(pick(rng, _COMPOSE_ANGLES))
+        self.theta2_deg = int(pick(rng, _COMPOSE_ANGLES))
         self.theta1 = math.radians(self.theta1_deg)
         self.theta2 = math.radians(self.theta2_deg)
         self.expected = quat.multiply(*self._quaternions()[::-1])
@@ -1336,11 +1191,11 @@ class ComposeRotationsWithQuaternions(_Chapter3Exercise):
             rf"(quaternion $q_2$); both axes are fixed in space and pass through the origin. "
             rf"Give the single unit quaternion $q$ of the combined rotation." "\n\n" + _QUATERNION
             + r" Both $q$ and $-q$ are accepted." + "\n\n"
-            + _data_note("axis1", "theta1_deg", "theta1", "axis2", "theta2_deg", "theta2")
+            + data_note("axis1", "theta1_deg", "theta1", "axis2", "theta2_deg", "theta2")
             + " (`.theta1`, `.theta2` are in radians.)")
 
 
-class SlerpMidpoint(_Chapter3Exercise):
+class SlerpMidpoint(DrawnExercise):
     r"""The orientation halfway between two unit quaternions by slerp (:math:`t = 1/2`).
 
     At :math:`t = 1/2` both slerp weights equal :math:`\sin(\Omega/2)/\sin\Omega`, so the result
@@ -1387,15 +1242,8 @@ class SlerpMidpoint(_Chapter3Exercise):
                                  r"$-q_1$ before interpolating.", "longer arc"))
         return found
 
-    def setup(self, rng):
-        for _ in range(_MAX_DRAWS):
-            self.draw(rng)
-            dot = abs(float(self.q0 @ self.q1))
-            mistakes = self.mistakes()
-            if 0.1 < dot < 0.95 and _well_separated(self.expected, mistakes, True):
-                self._mistakes = mistakes
-                return
-        raise RuntimeError("SlerpMidpoint: found no suitable variant")
+    def acceptable(self):
+        return 0.1 < abs(float(self.q0 @ self.q1)) < 0.95
 
     def statement(self):
         return (
@@ -1405,7 +1253,7 @@ class SlerpMidpoint(_Chapter3Exercise):
             rf"orientation halfway between them by spherical linear interpolation (slerp) at "
             rf"$t = \tfrac12$, the way an animation system would turn a body from $q_0$ to "
             rf"$q_1$." "\n\n" + _QUATERNION + r" Both $q$ and $-q$ are accepted." + "\n\n"
-            + _data_note("q0", "q1"))
+            + data_note("q0", "q1"))
 
 
 #: The exercises of chapter 3, in the order of the solutions notebook.

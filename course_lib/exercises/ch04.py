@@ -12,7 +12,8 @@ The expected answers come from :mod:`course_lib.viewing` (and :mod:`course_lib.t
 exercise names the slips it anticipates (the compendium's perspective matrix, the angle in
 degrees, a forgotten homogeneous divide, the y axis flipped, ...), computes the answer each slip
 would give, and draws its numbers again until those answers differ clearly from the right one and
-from each other, so that a diagnosis is never ambiguous.
+from each other, so that a diagnosis is never ambiguous
+(:class:`~course_lib.exercises.core.DrawnExercise`).
 
 Conventions (those of :mod:`course_lib.viewing`): column vectors :math:`p' = M p`; the eye looks
 down :math:`-z_e`; ``near`` and ``far`` are positive distances in front of the eye; the near plane
@@ -20,15 +21,14 @@ goes to :math:`z = -1` and the far plane to :math:`z = +1` in CSS; ``gaze`` is a
 point.
 """
 import math
-import zlib
 
 import numpy as np
 
 from .. import format as fmt
 from .. import transforms as tf
 from .. import viewing
-from .core import (Exercise, Feedback, Mistake, diagnose_matrix, diagnose_number,
-                   diagnose_vector, is_unanswered)
+from .core import (APART, DECIMALS, DrawnExercise, Mistake, data_note, diagnose_parts, pick,
+                   small_ints)
 
 __all__ = [
     "EXERCISES",
@@ -49,27 +49,11 @@ __all__ = [
 ]
 
 # ---------------------------------------------------------------------------------------------
-# Helpers shared with chapter 5
+# Helpers
 # ---------------------------------------------------------------------------------------------
 
-#: Answers closer than this count as "the same" when the variants are drawn; anticipated mistakes
-#: must be further apart than _APART from the right answer and from each other.
-_SAME, _APART = 1e-9, 0.05
-_MAX_DRAWS = 500
-_DECIMALS = "Give at least 3 decimals (or let numpy compute them)."
-
-
-def _pick(rng, options):
-    """One element of the sequence `options`, drawn with `rng`."""
-    return options[int(rng.integers(len(options)))]
-
-
-def _small_ints(rng, n, low=-3, high=3):
-    """A non-zero vector of `n` whole numbers in [low, high], as floats."""
-    while True:
-        v = rng.integers(low, high + 1, size=n).astype(float)
-        if np.any(v):
-            return v
+_vec = fmt.vector_latex
+_num = fmt.number
 
 
 def _signs(rng, n):
@@ -80,258 +64,16 @@ def _deg(angle_deg):
     return rf"{angle_deg}^\circ"
 
 
-def _vec(v):
-    return fmt.vector_latex(v)
-
-
-def _num(x):
-    return fmt.number(x)
-
-
-def _data_note(*names):
-    listed = ", ".join(f"`.{name}`" for name in names)
-    return f"*The numbers of this question are the attributes {listed} of the exercise object.*"
-
-
-def _read_floats(value):
-    """`value` as a finite float array, or None when it cannot be read."""
-    if value is None or value is Ellipsis or isinstance(value, (str, bytes, dict, set)):
-        return None
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        return None
-    return arr if np.isfinite(arr).all() else None
-
-
-def _gap(a, b):
-    """Largest componentwise difference of `a` and `b` (infinite for different shapes)."""
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    if a.shape != b.shape:
-        return math.inf
-    return float(np.abs(a - b).max()) if a.size else 0.0
-
-
-def _projective_gap(a, b):
-    """How far `a` is from every multiple of `b` (0 when a = c b for some c)."""
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    if a.shape != b.shape:
-        return math.inf
-    k = int(np.argmax(np.abs(b)))
-    if abs(b.flat[k]) < 1e-12:
-        return _gap(a, b)
-    return _gap(a, a.flat[k] / b.flat[k] * b)
-
-
-def _well_separated(expected, mistakes, may_coincide=(), projective=False):
-    """True when every anticipated mistake can be told apart from the answer and the others.
-
-    A mistake whose key is in `may_coincide` may equal the right answer in some variants (then it
-    is simply right); otherwise each mistake must differ from the right answer (for projective
-    matrices: from every multiple of it), and from the mistakes of other keys, by more than the
-    rounding of a hand computation.
-    """
-    live = []
-    for mistake in mistakes:
-        gap = _projective_gap(mistake.value, expected) if projective \
-            else _gap(mistake.value, expected)
-        if gap <= _SAME and mistake.key in may_coincide:
-            continue
-        if gap < _APART:
-            return False
-        live.append(mistake)
-    for i, mistake in enumerate(live):
-        for other in live[i + 1:]:
-            if other.key != mistake.key and _gap(mistake.value, other.value) < _APART:
-                return False
-    return True
-
-
-def _live(expected, mistakes):
-    """The mistakes that differ from the right answer in this variant."""
-    return [m for m in mistakes if _gap(m.value, expected) > _SAME]
-
-
-def _both_signs(mistakes):
-    """The mistakes and their negatives (a projective matrix and its negative are the same)."""
-    return list(mistakes) + [Mistake(-m.value, m.explanation, m.key) for m in mistakes]
-
-
-_UNANSWERED = "Replace the `...` with your answer and run the cell again."
-
-
-def _close(a, b, atol=2e-3):
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    return a.shape == b.shape and bool(np.allclose(a, b, rtol=1e-3, atol=atol))
-
-
-def _parts_feedback(answer, parts, what, form_hint, hint=""):
-    """Judge an answer made of several numbers, each with its own anticipated mistakes.
-
-    Parameters
-    ----------
-    answer : object
-    parts : list of (str, float, list of Mistake)
-        The name of each number, its expected value and the slips anticipated for it.
-    what : str
-        How the feedback names the whole answer.
-    form_hint : str
-        What to type, for an answer that cannot be read.
-    hint : str
-        How to get the numbers right, for wrong numbers that match no anticipated slip.
-
-    Returns
-    -------
-    Feedback
-        Correct when every number is right; otherwise the explanation of the first anticipated
-        slip found (its key is the diagnosis), followed by the list of the numbers that are right
-        and wrong.
-    """
-    if is_unanswered(answer) or (isinstance(answer, (list, tuple))
-                                 and any(is_unanswered(a) for a in answer)):
-        return Feedback("unanswered", _UNANSWERED)
-    values = _read_floats(answer)
-    if values is None or values.shape != (len(parts),):
-        return Feedback("invalid", f"{what[:1].upper() + what[1:]} should be {len(parts)} "
-                        f"numbers: {form_hint}", "unreadable")
-    wrong, found = [], None
-    for value, (name, expected, mistakes) in zip(values, parts):
-        if math.isclose(value, expected, rel_tol=1e-3, abs_tol=2e-3):
-            continue
-        wrong.append(name)
-        if found is None:
-            for mistake in mistakes:
-                if _close(value, mistake.value) and not _close(mistake.value, expected):
-                    found = (name, mistake)
-                    break
-    if not wrong:
-        return Feedback("correct", f"All {len(parts)} numbers are right.")
-    right = [name for name, _, _ in parts if name not in wrong]
-    summary = (f" Right: {', '.join(right)}." if right else "") + \
-        f" Not yet: {', '.join(wrong)}."
-    if found is not None:
-        name, mistake = found
-        return Feedback("wrong", f"*{name[:1].upper() + name[1:]}:* {mistake.explanation}"
-                        + summary, mistake.key)
-    return Feedback("wrong", f"Some of your numbers are off.{summary} {hint}".rstrip(),
-                    "value differs")
-
-
-def _as_point(answer, dim, projective):
-    """A point answer given with a homogeneous coordinate, reduced to `dim` numbers.
-
-    Returns the answer to compare (unchanged when it has `dim` entries or cannot be read), or a
-    Feedback when it is homogeneous with :math:`w \\ne 1`.
-    """
-    arr = _read_floats(answer)
-    if arr is None or arr.shape != (dim + 1,):
-        return answer
-    w = float(arr[-1])
-    if math.isclose(w, 1.0, abs_tol=1e-3):
-        return arr[:-1]
-    if projective and abs(w) > 1e-12:
-        return Feedback("wrong", f"You gave homogeneous coordinates with $w = {_num(w)}$. The "
-                        r"point they stand for is found by the **homogeneous divide**: divide "
-                        r"the other coordinates by $w$ (then $w$ becomes 1).", "no divide")
-    return Feedback("invalid", f"Give the point as {dim} numbers (ordinary coordinates).",
-                    "wrong shape")
-
-
-class _Drawn(Exercise):
-    """Shared machinery: draw until the anticipated mistakes are distinct, then check.
-
-    Subclasses implement ``draw(rng)`` (set the question's attributes and ``expected``),
-    ``mistakes()`` (a list of :class:`~course_lib.exercises.core.Mistake` computed from the
-    question), optionally ``acceptable()`` (reject a draw), and ``statement()``; they set
-    ``answer_form`` to ``"matrix"``, ``"point"`` (a point; a homogeneous 4-vector with w = 1 is
-    accepted, and with ``projective_point`` one with w != 1 is named as a forgotten divide),
-    ``"number"`` or ``"custom"`` (then they implement ``_check``). The mistakes of the accepted
-    variant are computed once, in ``setup``, and reused by every ``check``.
-    """
-
-    answer_form = "matrix"
-    what = "the matrix"
-    may_coincide = ()
-    homogeneous_scale = False
-    projective_point = False
-
-    def setup(self, rng):
-        # A stream of its own per exercise class, so that exercises sharing a seed (one SEED per
-        # notebook) do not share their numbers (two camera exercises would show the same camera).
-        rng = np.random.default_rng([self.seed, zlib.crc32(type(self).__name__.encode())])
-        for _ in range(_MAX_DRAWS):
-            self.draw(rng)
-            if not self.acceptable():
-                continue
-            mistakes = self.mistakes()
-            if self.separated(mistakes):
-                self._mistakes = self.keep(mistakes)
-                return
-        raise RuntimeError(f"{type(self).__name__}: found no variant whose anticipated mistakes "
-                           "are distinct")
-
-    def draw(self, rng):
-        """Draw the numbers of the question and compute ``self.expected``."""
-        raise NotImplementedError
-
-    def acceptable(self):
-        """Whether the drawn variant is usable (beyond the separation of the mistakes)."""
-        return True
-
-    def mistakes(self):
-        """The anticipated wrong answers, computed from the question."""
-        return []
-
-    def keep(self, mistakes):
-        """The mistakes worth checking in this variant (those that differ from the answer)."""
-        return mistakes if self.homogeneous_scale else _live(self.expected, mistakes)
-
-    def separated(self, mistakes):
-        """Whether the anticipated mistakes can be told apart (see ``_well_separated``)."""
-        return _well_separated(self.expected, mistakes, self.may_coincide,
-                               projective=self.homogeneous_scale)
-
-    def check(self, answer):
-        """Judge `answer` and say what is wrong with it; never raises.
-
-        Parameters
-        ----------
-        answer : object
-            The student's answer in the form the statement asks for.
-
-        Returns
-        -------
-        Feedback
-        """
-        try:
-            return self._check(answer)
-        except Exception as exc:          # a checker must never stop the notebook
-            return Feedback("invalid", f"Your answer could not be checked ({exc}); give it in "
-                            "the form the question asks for.", "unreadable")
-
-    def _check(self, answer):
-        mistakes = self._mistakes
-        if self.answer_form == "matrix":
-            return diagnose_matrix(answer, self.expected, mistakes, what=self.what,
-                                   homogeneous_scale=self.homogeneous_scale)
-        if self.answer_form == "point":
-            reduced = _as_point(answer, len(self.expected), self.projective_point)
-            if isinstance(reduced, Feedback):
-                return reduced
-            return diagnose_vector(reduced, self.expected, mistakes, what=self.what)
-        return diagnose_number(answer, self.expected, mistakes, what=self.what)
-
-
-_MATRIX_4 = "**Answer:** the $4 \\times 4$ matrix as a numpy array. " + _DECIMALS
+_MATRIX_4 = "**Answer:** the $4 \\times 4$ matrix as a numpy array. " + DECIMALS
 _POINT_3 = ("**Answer:** the point as a list of 3 numbers `[x, y, z]` (ordinary coordinates; a "
-            "homogeneous `[x, y, z, 1]` is accepted too). " + _DECIMALS)
+            "homogeneous `[x, y, z, 1]` is accepted too). " + DECIMALS)
 
 
 # ---------------------------------------------------------------------------------------------
 # The textbook's P_PER
 # ---------------------------------------------------------------------------------------------
 
-class SimplePerspectivePoint(_Drawn):
+class SimplePerspectivePoint(DrawnExercise):
     r"""Project a point with the textbook's :math:`P_{PER}` onto the plane :math:`z = d`.
 
     The centre of projection is the origin; :math:`P_{PER}` gives the homogeneous point
@@ -359,9 +101,9 @@ class SimplePerspectivePoint(_Drawn):
     what = "the projected point"
 
     def draw(self, rng):
-        self.d = float(_pick(rng, (1, 2, 3, 4)))
-        z = float(_pick(rng, (2, 3, 4, 5, 6, 8)))
-        x, y = _small_ints(rng, 2, -6, 6)
+        self.d = float(pick(rng, (1, 2, 3, 4)))
+        z = float(pick(rng, (2, 3, 4, 5, 6, 8)))
+        x, y = small_ints(rng, 2, -6, 6)
         self.p = np.array([x, y, z])
         self.expected = tf.apply(viewing.simple_perspective(self.d), self.p)
 
@@ -387,7 +129,7 @@ class SimplePerspectivePoint(_Drawn):
             rf"with $d = {_num(self.d)}$. Project the point $p = {_vec(self.p)}$ with the "
             r"textbook's matrix $P_{PER} = \begin{bmatrix} d & 0 & 0 & 0 \\ 0 & d & 0 & 0 \\ "
             r"0 & 0 & d & 0 \\ 0 & 0 & 1 & 0 \end{bmatrix}$, followed by the homogeneous "
-            r"divide. Where does $p$ land?" "\n\n" + _POINT_3 + "\n\n" + _data_note("d", "p"))
+            r"divide. Where does $p$ land?" "\n\n" + _POINT_3 + "\n\n" + data_note("d", "p"))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -409,17 +151,17 @@ def _camera(rng):
 
     Returns ``(eye, gaze, up)``; the ECS axes they define have rational components.
     """
-    n, rows = _pick(rng, _ORTHO_BASES)
+    n, rows = pick(rng, _ORTHO_BASES)
     basis = np.array(rows, dtype=float)
     basis = basis[:, rng.permutation(3)] * _signs(rng, 3)          # permute the coordinates
     basis = basis[rng.permutation(3)] * _signs(rng, 3)[:, None]    # and the axes
     x_e, y_e = basis[0] / n, basis[1] / n
     z_e = np.cross(x_e, y_e)                                       # right-handed
     gaze = -z_e * n * (2 if n == 1 else 1)
-    c = float(_pick(rng, (-2, -1, 1, 2)))
+    c = float(pick(rng, (-2, -1, 1, 2)))
     up = n * y_e + c * n * z_e
     up = up / math.gcd(*(int(round(abs(v))) for v in up))
-    eye = _small_ints(rng, 3)
+    eye = small_ints(rng, 3)
     return eye, np.round(gaze), np.round(up)
 
 
@@ -458,7 +200,7 @@ _ECS_CONVENTION = (r"The eye coordinate system has $x_e$ to the right, $y_e$ up 
                    r"$y_e = z_e \times x_e$.")
 
 
-class EyeCoordinateAxes(_Drawn):
+class EyeCoordinateAxes(DrawnExercise):
     r"""The unit axes :math:`x_e, y_e, z_e` of the eye coordinate system, in world coordinates.
 
     :math:`z_e = -g / \lVert g \rVert`, :math:`x_e = up \times z_e` normalized, and
@@ -516,11 +258,11 @@ class EyeCoordinateAxes(_Drawn):
             _camera_words(self.eye, self.gaze, self.up) + " " + _ECS_CONVENTION + "\n\n"
             r"Compute the unit vectors $x_e$, $y_e$, $z_e$ (in world coordinates)." "\n\n"
             r"**Answer:** a $3 \times 3$ numpy array whose **rows** are $x_e$, $y_e$, $z_e$: "
-            r"`np.array([x_e, y_e, z_e])`. " + _DECIMALS + "\n\n"
-            + _data_note("eye", "gaze", "up"))
+            r"`np.array([x_e, y_e, z_e])`. " + DECIMALS + "\n\n"
+            + data_note("eye", "gaze", "up"))
 
 
-class LookAtMatrix(_Drawn):
+class LookAtMatrix(DrawnExercise):
     r"""The WCS -> ECS matrix :math:`M = R\,T(-E)` of a camera at `eye` looking along `gaze`.
 
     The rows of :math:`R` are the ECS axes; the last column is
@@ -590,10 +332,10 @@ class LookAtMatrix(_Drawn):
             _camera_words(self.eye, self.gaze, self.up) + " " + _ECS_CONVENTION + "\n\n"
             r"Give the homogeneous matrix $M_{WCS \to ECS}$ that takes world coordinates to eye "
             r"coordinates ($p_{ECS} = M\,p_{WCS}$)." "\n\n" + _MATRIX_4 + "\n\n"
-            + _data_note("eye", "gaze", "up"))
+            + data_note("eye", "gaze", "up"))
 
 
-class PointToEyeCoordinates(_Drawn):
+class PointToEyeCoordinates(DrawnExercise):
     r"""The eye coordinates of a world point: :math:`(x_e, y_e, z_e) \cdot (p - E)`.
 
     Attributes: ``eye``, ``gaze``, ``up``, ``p``.
@@ -614,7 +356,7 @@ class PointToEyeCoordinates(_Drawn):
 
     def draw(self, rng):
         self.eye, self.gaze, self.up = _camera(rng)
-        self.p = _small_ints(rng, 3)
+        self.p = small_ints(rng, 3)
         M = viewing.look_at(self.eye, self.gaze, self.up)
         self.expected_axes = M[:3, :3]
         self.expected = tf.apply(M, self.p)
@@ -642,7 +384,7 @@ class PointToEyeCoordinates(_Drawn):
         return (
             _camera_words(self.eye, self.gaze, self.up) + " " + _ECS_CONVENTION + "\n\n"
             rf"What are the eye coordinates of the world point $p = {_vec(self.p)}$?" "\n\n"
-            + _POINT_3 + "\n\n" + _data_note("eye", "gaze", "up", "p"))
+            + _POINT_3 + "\n\n" + data_note("eye", "gaze", "up", "p"))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -655,7 +397,7 @@ def _frustum_formula(r, t, n, f):
                      [0, 0, -(f + n) / (f - n), -2 * f * n / (f - n)], [0, 0, -1, 0]], float)
 
 
-class PerspectiveMatrix(_Drawn):
+class PerspectiveMatrix(DrawnExercise):
     r"""The perspective ECS -> CSS matrix from a field of view, an aspect ratio, near and far.
 
     :math:`t = n \tan\frac{\theta}{2}`, :math:`r = t \cdot aspect`, and
@@ -682,11 +424,11 @@ class PerspectiveMatrix(_Drawn):
     homogeneous_scale = True
 
     def draw(self, rng):
-        self.fov_deg = int(_pick(rng, (60, 90, 120)))
+        self.fov_deg = int(pick(rng, (60, 90, 120)))
         self.fov = math.radians(self.fov_deg)
-        self.aspect = float(_pick(rng, (1.0, 1.5, 2.0)))
-        self.near = float(_pick(rng, (1, 2)))
-        self.far = float(_pick(rng, (3, 4, 5, 10, 11)))
+        self.aspect = float(pick(rng, (1.0, 1.5, 2.0)))
+        self.near = float(pick(rng, (1, 2)))
+        self.far = float(pick(rng, (3, 4, 5, 10, 11)))
         self.expected = viewing.perspective(self.fov, self.aspect, self.near, self.far)
 
     def mistakes(self):
@@ -729,7 +471,7 @@ class PerspectiveMatrix(_Drawn):
             found.append(Mistake(_frustum_formula(t / a, t, n, f), r"The aspect ratio is "
                                  r"width over height, so the window is wider than tall: "
                                  r"$r = t \cdot aspect$ (you divided).", "aspect inverted"))
-        return _both_signs(found)
+        return found
 
     def statement(self):
         return (
@@ -742,14 +484,14 @@ class PerspectiveMatrix(_Drawn):
             r"after the homogeneous divide, with the near plane going to $z = -1$ and the far "
             r"plane to $z = +1$." "\n\n" + _MATRIX_4 + r" Any non-zero multiple of the matrix "
             r"is accepted (it is the same projective transformation)." "\n\n"
-            + _data_note("fov_deg", "fov", "aspect", "near", "far") + " (`.fov` is in radians.)")
+            + data_note("fov_deg", "fov", "aspect", "near", "far") + " (`.fov` is in radians.)")
 
 
 #: (near, far) pairs whose depth entries (f+n)/(f-n) and 2fn/(f-n) are short decimals.
 _NEAR_FAR = ((1, 3), (1, 5), (2, 6), (1, 9), (2, 10), (3, 9), (1, 2))
 
 
-class PerspectiveDivide(_Drawn):
+class PerspectiveDivide(DrawnExercise):
     r"""A point of eye space through a perspective matrix and the homogeneous divide.
 
     :math:`(x_c, y_c, z_c, w_c) = M\,(x, y, z, 1)` with :math:`w_c = -z`, then
@@ -774,10 +516,10 @@ class PerspectiveDivide(_Drawn):
     what = "the point in CSS"
 
     def draw(self, rng):
-        n, f = (float(v) for v in _pick(rng, _NEAR_FAR))
+        n, f = (float(v) for v in pick(rng, _NEAR_FAR))
         self.near, self.far = n, f
-        self.right = n * float(_pick(rng, (0.5, 1, 2)))
-        self.top = n * float(_pick(rng, (0.5, 1, 2)))
+        self.right = n * float(pick(rng, (0.5, 1, 2)))
+        self.top = n * float(pick(rng, (0.5, 1, 2)))
         self.left, self.bottom = -self.right, -self.top
         self.M = viewing.frustum(self.left, self.right, self.bottom, self.top, n, f)
         depth = float(rng.integers(int(n), int(f) + 1))
@@ -814,10 +556,10 @@ class PerspectiveDivide(_Drawn):
             rf"$f = {_num(self.far)}$) is" "\n\n" rf"$$M = {fmt.matrix_latex(self.M)}.$$" "\n\n"
             rf"Where does the point $p = {_vec(self.p)}$ (eye coordinates) land in canonical "
             r"screen space?" "\n\n" + _POINT_3 + "\n\n"
-            + _data_note("M", "left", "right", "bottom", "top", "near", "far", "p"))
+            + data_note("M", "left", "right", "bottom", "top", "near", "far", "p"))
 
 
-class CssDepth(_Drawn):
+class CssDepth(DrawnExercise):
     r"""The CSS depth of a point at distance :math:`D` in front of the eye.
 
     :math:`z_{CSS} = \frac{f+n}{f-n} - \frac{2fn}{(f-n)\,D}`: not linear in :math:`D`
@@ -840,7 +582,7 @@ class CssDepth(_Drawn):
     what = "the depth"
 
     def draw(self, rng):
-        n, f = (float(v) for v in _pick(rng, _NEAR_FAR))
+        n, f = (float(v) for v in pick(rng, _NEAR_FAR))
         self.near, self.far = n, f
         self.distance = float(rng.integers(int(n), int(f) + 1))
         M = viewing.perspective(math.radians(90), 1.0, n, f)
@@ -871,11 +613,11 @@ class CssDepth(_Drawn):
             rf"line of sight at distance $D = {_num(self.distance)}$ in front of the eye "
             rf"(so $z_e = {_num(-self.distance)}$). After the perspective matrix and the "
             r"homogeneous divide (near plane $\to z = -1$, far plane $\to z = +1$), what is its "
-            r"depth $z_{CSS}$?" "\n\n" r"**Answer:** one number. " + _DECIMALS + "\n\n"
-            + _data_note("near", "far", "distance"))
+            r"depth $z_{CSS}$?" "\n\n" r"**Answer:** one number. " + DECIMALS + "\n\n"
+            + data_note("near", "far", "distance"))
 
 
-class OrthographicMatrix(_Drawn):
+class OrthographicMatrix(DrawnExercise):
     r"""The orthographic ECS -> CSS matrix of a box: scale and translate onto :math:`[-1, 1]^3`.
 
     The box is :math:`[l, r] \times [b, t] \times [-f, -n]` in eye coordinates; the near face
@@ -902,8 +644,8 @@ class OrthographicMatrix(_Drawn):
         self.right = float(rng.integers(1, 7))
         self.bottom = float(rng.integers(-4, 1))
         self.top = float(rng.integers(1, 5))
-        self.near = float(_pick(rng, (1, 2, 3)))
-        self.far = self.near + float(_pick(rng, (2, 4, 5, 8)))
+        self.near = float(pick(rng, (1, 2, 3)))
+        self.far = self.near + float(pick(rng, (2, 4, 5, 8)))
         self.expected = viewing.orthographic(self.left, self.right, self.bottom, self.top,
                                              self.near, self.far)
 
@@ -940,14 +682,14 @@ class OrthographicMatrix(_Drawn):
             rf"in front of the eye (that is, ${_num(-self.far)} \le z_e \le {_num(-self.near)}$"
             r"). Give the matrix $M_{ECS \to CSS}$ that maps this box onto the cube "
             r"$[-1, 1]^3$, the near face to $z = -1$ and the far face to $z = +1$." "\n\n"
-            + _MATRIX_4 + "\n\n" + _data_note("left", "right", "bottom", "top", "near", "far"))
+            + _MATRIX_4 + "\n\n" + data_note("left", "right", "bottom", "top", "near", "far"))
 
 
 # ---------------------------------------------------------------------------------------------
 # Parallel projections onto the xy plane
 # ---------------------------------------------------------------------------------------------
 
-class ObliqueProjection(_Drawn):
+class ObliqueProjection(DrawnExercise):
     r"""Project a point along a direction of projection onto the plane :math:`z = 0`.
 
     :math:`p' = p - \frac{z}{DOP_z} DOP`, the textbook's :math:`P_{OBLI}`.
@@ -968,11 +710,11 @@ class ObliqueProjection(_Drawn):
     what = "the projected point"
 
     def draw(self, rng):
-        dx, dy = _small_ints(rng, 2, -2, 2)
-        dz = float(_pick(rng, (-2, -1, 1, 2)))
+        dx, dy = small_ints(rng, 2, -2, 2)
+        dz = float(pick(rng, (-2, -1, 1, 2)))
         self.dop = np.array([dx, dy, dz])
         x, y = rng.integers(-3, 4, size=2).astype(float)
-        z = float(_pick(rng, (-4, -2, 2, 4)))
+        z = float(pick(rng, (-4, -2, 2, 4)))
         self.p = np.array([x, y, z])
         self.expected = tf.apply(viewing.oblique(self.dop), self.p)
 
@@ -1004,10 +746,10 @@ class ObliqueProjection(_Drawn):
             rf"A parallel projection onto the plane $z = 0$ has the direction of projection "
             rf"$DOP = {_vec(self.dop)}$ (not perpendicular to the plane: an oblique "
             rf"projection). Where does the point $p = {_vec(self.p)}$ land?" "\n\n"
-            + _POINT_3 + "\n\n" + _data_note("dop", "p"))
+            + _POINT_3 + "\n\n" + data_note("dop", "p"))
 
 
-class CavalierCabinet(_Drawn):
+class CavalierCabinet(DrawnExercise):
     r"""A point in a cavalier or cabinet drawing.
 
     The unit vector along +z is drawn at the angle :math:`\alpha` to the x axis with length
@@ -1034,12 +776,12 @@ class CavalierCabinet(_Drawn):
     what = "the projected point"
 
     def draw(self, rng):
-        self.kind = str(_pick(rng, ("cavalier", "cabinet")))
+        self.kind = str(pick(rng, ("cavalier", "cabinet")))
         self.length = 1.0 if self.kind == "cavalier" else 0.5
-        self.alpha_deg = int(_pick(rng, (30, 45, 60)))
+        self.alpha_deg = int(pick(rng, (30, 45, 60)))
         self.alpha = math.radians(self.alpha_deg)
         x, y = rng.integers(-3, 4, size=2).astype(float)
-        z = float(_pick(rng, (-4, -2, 2, 4)))
+        z = float(pick(rng, (-4, -2, 2, 4)))
         self.p = np.array([x, y, z])
         L, a = self.length, self.alpha
         self.dop = np.array([-L * math.cos(a), -L * math.sin(a), 1.0])
@@ -1084,7 +826,7 @@ class CavalierCabinet(_Drawn):
             rf"the positive x axis, at {half}. (It is the oblique projection with "
             r"$DOP = (-L\cos\alpha, -L\sin\alpha, 1)$.) Where does the point "
             rf"$p = {_vec(self.p)}$ land?" "\n\n" + _POINT_3 + "\n\n"
-            + _data_note("kind", "alpha_deg", "alpha", "length", "p")
+            + data_note("kind", "alpha_deg", "alpha", "length", "p")
             + " (`.alpha` is in radians.)")
 
 
@@ -1093,10 +835,10 @@ class CavalierCabinet(_Drawn):
 # ---------------------------------------------------------------------------------------------
 
 def _draw_viewport(ex, rng):
-    ex.xmin = float(_pick(rng, (0, 10, 20, 50, 100)))
-    ex.ymin = float(_pick(rng, (0, 20, 40, 60)))
-    ex.xmax = ex.xmin + float(_pick(rng, (320, 400, 640, 800)))
-    ex.ymax = ex.ymin + float(_pick(rng, (240, 300, 480, 600)))
+    ex.xmin = float(pick(rng, (0, 10, 20, 50, 100)))
+    ex.ymin = float(pick(rng, (0, 20, 40, 60)))
+    ex.xmax = ex.xmin + float(pick(rng, (320, 400, 640, 800)))
+    ex.ymax = ex.ymin + float(pick(rng, (240, 300, 480, 600)))
     ex.zmin, ex.zmax = 0.0, 1.0
 
 
@@ -1108,7 +850,7 @@ def _viewport_words(ex):
             rf"{_num(ex.zmax)}]$.")
 
 
-class ViewportMatrix(_Drawn):
+class ViewportMatrix(DrawnExercise):
     r"""The CSS -> VCS matrix: scale by half the viewport's size, shift to its centre.
 
     Attributes: ``xmin``, ``ymin``, ``xmax``, ``ymax``, ``zmin``, ``zmax``.
@@ -1163,10 +905,10 @@ class ViewportMatrix(_Drawn):
             r"$[-1, 1]^3$ of canonical screen space onto the viewport and the depth range "
             r"($(-1, -1, -1)$ to the bottom-left corner at depth $z_{min}$)." "\n\n"
             + _MATRIX_4 + "\n\n"
-            + _data_note("xmin", "ymin", "xmax", "ymax", "zmin", "zmax"))
+            + data_note("xmin", "ymin", "xmax", "ymax", "zmin", "zmax"))
 
 
-class ViewportPixel(_Drawn):
+class ViewportPixel(DrawnExercise):
     r"""The viewport coordinates (pixel x, y and depth) of a point of canonical screen space.
 
     Attributes: ``xmin``, ``ymin``, ``xmax``, ``ymax``, ``zmin``, ``zmax``, ``q`` (the CSS point).
@@ -1188,7 +930,7 @@ class ViewportPixel(_Drawn):
     def draw(self, rng):
         _draw_viewport(self, rng)
         quarters = np.arange(-4, 5) / 4
-        self.q = np.array([float(_pick(rng, quarters)) for _ in range(3)])
+        self.q = np.array([float(pick(rng, quarters)) for _ in range(3)])
         self.expected = tf.apply(viewing.viewport(self.xmin, self.ymin, self.xmax, self.ymax,
                                                   self.zmin, self.zmax), self.q)
 
@@ -1219,8 +961,8 @@ class ViewportPixel(_Drawn):
         return (
             _viewport_words(self) + rf" A point has the CSS coordinates $q = {_vec(self.q)}$. "
             r"Where does it land: which pixel coordinates $(x_v, y_v)$ and which depth $z_v$?"
-            "\n\n" r"**Answer:** a list of 3 numbers `[x_v, y_v, z_v]`. " + _DECIMALS + "\n\n"
-            + _data_note("xmin", "ymin", "xmax", "ymax", "zmin", "zmax", "q"))
+            "\n\n" r"**Answer:** a list of 3 numbers `[x_v, y_v, z_v]`. " + DECIMALS + "\n\n"
+            + data_note("xmin", "ymin", "xmax", "ymax", "zmin", "zmax", "q"))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1231,7 +973,7 @@ def _project(d, p):
     return np.asarray(viewing.simple_perspective(d) @ np.append(p, 1.0))
 
 
-class CrossRatioUnderProjection(_Drawn):
+class CrossRatioUnderProjection(DrawnExercise):
     r"""A ratio of distances changes under perspective projection; the cross ratio does not.
 
     Four collinear points A, B, C, D (in this order) are projected by :math:`P_{PER}`. The
@@ -1254,10 +996,10 @@ class CrossRatioUnderProjection(_Drawn):
     answer_form = "custom"
 
     def draw(self, rng):
-        self.d = float(_pick(rng, (1, 2, 4)))
-        start = np.array([*rng.integers(-2, 3, size=2), _pick(rng, (1, 2))], dtype=float)
-        ux, uy = _small_ints(rng, 2, -2, 2)
-        u = np.array([ux, uy, float(_pick(rng, (1, 2)))])
+        self.d = float(pick(rng, (1, 2, 4)))
+        start = np.array([*rng.integers(-2, 3, size=2), pick(rng, (1, 2))], dtype=float)
+        ux, uy = small_ints(rng, 2, -2, 2)
+        u = np.array([ux, uy, float(pick(rng, (1, 2)))])
         steps = np.sort(rng.choice(6, size=4, replace=False)).astype(float)
         self.A, self.B, self.C, self.D = (start + s * u for s in steps)
         images = [tf.apply(viewing.simple_perspective(self.d), p) for p in self._points()]
@@ -1305,14 +1047,14 @@ class CrossRatioUnderProjection(_Drawn):
     def separated(self, mistakes):
         r, r_after, cr, _ = self.expected
         values = [r, 1 / r, r_after, 1 / r_after]
-        apart = all(abs(a - b) >= _APART for i, a in enumerate(values) for b in values[i + 1:])
-        return apart and abs(cr - 1 / cr) >= _APART
+        apart = all(abs(a - b) >= APART for i, a in enumerate(values) for b in values[i + 1:])
+        return apart and abs(cr - 1 / cr) >= APART
 
     def _check(self, answer):
-        return _parts_feedback(answer, self._parts(), "your answer",
-                               "`[AB/BC, A'B'/B'C', cross ratio before, cross ratio after]`.",
-                               r"Project each point, $(x, y, z) \to (xd/z,\ yd/z,\ d)$, then "
-                               r"measure the distances between the images.")
+        return diagnose_parts(answer, self._parts(), "your answer",
+                              "`[AB/BC, A'B'/B'C', cross ratio before, cross ratio after]`.",
+                              r"Project each point, $(x, y, z) \to (xd/z,\ yd/z,\ d)$, then "
+                              r"measure the distances between the images.")
 
     def statement(self):
         return (
@@ -1325,11 +1067,11 @@ class CrossRatioUnderProjection(_Drawn):
             r"ratio $(A', B'; C', D')$ of the images. Which of the two properties survives the "
             r"projection?" "\n\n"
             r"**Answer:** a list of 4 numbers `[AB/BC, A'B'/B'C', cross_before, cross_after]` "
-            r"(distances are ordinary, positive lengths). " + _DECIMALS + "\n\n"
-            + _data_note("d", "A", "B", "C", "D"))
+            r"(distances are ordinary, positive lengths). " + DECIMALS + "\n\n"
+            + data_note("d", "A", "B", "C", "D"))
 
 
-class VanishingPoint(_Drawn):
+class VanishingPoint(DrawnExercise):
     r"""The vanishing point of a family of parallel lines under :math:`P_{PER}`.
 
     The image of :math:`p_0 + s\,u` tends to :math:`d\,(u_x / u_z,\ u_y / u_z,\ 1)` as
@@ -1354,10 +1096,10 @@ class VanishingPoint(_Drawn):
     what = "the vanishing point"
 
     def draw(self, rng):
-        self.d = float(_pick(rng, (1, 2, 3, 4)))
-        ux, uy = _small_ints(rng, 2, -3, 3)
-        self.u = np.array([ux, uy, float(_pick(rng, (-3, -2, -1, 1, 2, 3)))])
-        self.p0 = np.array([*rng.integers(-3, 4, size=2), _pick(rng, (1, 2, 3, 4))],
+        self.d = float(pick(rng, (1, 2, 3, 4)))
+        ux, uy = small_ints(rng, 2, -3, 3)
+        self.u = np.array([ux, uy, float(pick(rng, (-3, -2, -1, 1, 2, 3)))])
+        self.p0 = np.array([*rng.integers(-3, 4, size=2), pick(rng, (1, 2, 3, 4))],
                            dtype=float)
         homogeneous = viewing.simple_perspective(self.d) @ np.append(self.u, 0.0)
         self.expected = homogeneous[:3] / homogeneous[3]
@@ -1393,7 +1135,7 @@ class VanishingPoint(_Drawn):
             rf"$z = d$ with $d = {_num(self.d)}$. Their images meet in one point of the plane, "
             r"the vanishing point. Where is it?" "\n\n"
             r"**Answer:** the vanishing point as a list of 3 numbers `[x, y, z]` (a point of "
-            r"the plane $z = d$). " + _DECIMALS + "\n\n" + _data_note("d", "u", "p0"))
+            r"the plane $z = d$). " + DECIMALS + "\n\n" + data_note("d", "u", "p0"))
 
 
 #: The exercises of chapter 4, in the order of the solutions notebook.

@@ -20,14 +20,14 @@ inside; outcode bits left = 1, right = 2, bottom = 4, top = 8, near = 16, far = 
 test uses the view vector from the eye to the face.
 """
 import math
-import zlib
 
 import numpy as np
 
 from .. import clipping
-from .ch04 import (_APART, _DECIMALS, _MAX_DRAWS, _SAME, _UNANSWERED, _Drawn, _data_note,
-                   _gap, _num, _parts_feedback, _pick, _read_floats, _small_ints, _vec)
-from .core import Feedback, Mistake, is_unanswered
+from .. import format as fmt
+from .core import (APART, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake,
+                   data_note, diagnose_matrix, diagnose_parts, gap, is_unanswered, pick,
+                   read_floats, small_ints)
 
 __all__ = [
     "EXERCISES",
@@ -49,6 +49,10 @@ __all__ = [
 ]
 
 
+_vec = fmt.vector_latex
+_num = fmt.number
+
+
 # ---------------------------------------------------------------------------------------------
 # Reading answers that are not plain arrays
 # ---------------------------------------------------------------------------------------------
@@ -61,7 +65,7 @@ def _unanswered(answer):
 def _read_index_set(answer, n, what):
     """A set of indices in ``range(n)`` (or a boolean mask of length n), or a Feedback."""
     if _unanswered(answer):
-        return Feedback("unanswered", _UNANSWERED)
+        return Feedback("unanswered", UNANSWERED)
     if isinstance(answer, (str, bytes, dict)):
         return Feedback("invalid", f"Give {what} as a list of whole numbers, e.g. `[0, 3]` "
                         "(`[]` if there are none).", "unreadable")
@@ -153,7 +157,7 @@ def _quick_code(p, lo, hi):
 
 def _draw_box_2d(rng):
     lo = np.array([float(rng.integers(-2, 2)), float(rng.integers(-2, 2))])
-    hi = lo + np.array([float(_pick(rng, (4, 5, 6))), float(_pick(rng, (3, 4, 5)))])
+    hi = lo + np.array([float(pick(rng, (4, 5, 6))), float(pick(rng, (3, 4, 5)))])
     return lo, hi
 
 
@@ -161,7 +165,7 @@ def _clip_words(ex):
     return rf"The clip rectangle is {_box_words(ex.box_min, ex.box_max)}"
 
 
-class _Listed(_Drawn):
+class _Listed(DrawnExercise):
     """An exercise whose answer is a list, a set or a segment rather than an array.
 
     Its ``mistakes()`` are ``(value, explanation, key)`` triples; those equal to the right
@@ -218,7 +222,7 @@ class BackFaceCulling(_Listed):
                 break
         self.gaze = -self.eye
         self.points = rng.integers(-2, 3, size=(5, 3)).astype(float)
-        self.normals = np.array([_small_ints(rng, 3, -1, 1) for _ in range(5)])
+        self.normals = np.array([small_ints(rng, 3, -1, 1) for _ in range(5)])
         self._dots = np.einsum("ij,ij->i", self.normals, self.points - self.eye)
         mask = clipping.is_back_face(self.normals, self.points - self.eye)
         self.expected = {int(i) for i in np.flatnonzero(mask)}
@@ -270,7 +274,7 @@ class BackFaceCulling(_Listed):
             r"Which of these faces does back-face culling remove?" "\n\n"
             r"**Answer:** the list of the indices of the back faces, e.g. `[0, 3]` (`[]` if "
             r"there are none; the order does not matter)." "\n\n"
-            + _data_note("eye", "gaze", "points", "normals"))
+            + data_note("eye", "gaze", "points", "normals"))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -295,7 +299,7 @@ def _swap_sides(code):
 def _read_codes(answer, n, dim):
     """A list of n outcodes given as integers or bit strings, or a Feedback."""
     if _unanswered(answer):
-        return Feedback("unanswered", _UNANSWERED)
+        return Feedback("unanswered", UNANSWERED)
     form = (f"a list of {n} outcodes, each an integer (`9`) or a bit string of "
             f"{2 * dim} bits (`'{_bits(9, dim)}'`)")
     if isinstance(answer, (str, bytes, dict)) or not hasattr(answer, "__len__") \
@@ -348,7 +352,7 @@ class Outcodes(_Listed):
     answer_form = "custom"
 
     def draw(self, rng):
-        self.dim = int(_pick(rng, (2, 3)))
+        self.dim = int(pick(rng, (2, 3)))
         self.box_min = rng.integers(-2, 1, size=self.dim).astype(float)
         self.box_max = self.box_min + rng.integers(3, 5, size=self.dim)
         self.points = _ints_between(rng, self.box_min - 2, self.box_max + 2,
@@ -423,13 +427,13 @@ class Outcodes(_Listed):
             rf"The bits are {bits}; a point on the boundary is inside." "\n\n"
             rf"**Answer:** a list of 5 outcodes, each either an integer (e.g. `9`) or a string "
             rf"of {2 * self.dim} bits with the highest bit first (e.g. "
-            rf"`'{_bits(9, self.dim)}'`)." "\n\n" + _data_note("dim", "box_min", "box_max",
-                                                               "points"))
+            rf"`'{_bits(9, self.dim)}'`)." "\n\n" + data_note("dim", "box_min", "box_max",
+                                                              "points"))
 
 
 def _read_decisions(answer, n):
     if _unanswered(answer):
-        return Feedback("unanswered", _UNANSWERED)
+        return Feedback("unanswered", UNANSWERED)
     form = f"a list of {n} words, each `'accept'`, `'reject'` or `'clip'`"
     if isinstance(answer, (str, bytes, dict)) or not hasattr(answer, "__len__") \
             or len(answer) != n:
@@ -571,7 +575,7 @@ class CohenSutherlandDecision(_Listed):
             r"**clip** it (compute an intersection and test again)?" "\n\n"
             "| segment | $p_0$ | $p_1$ |\n|---|---|---|\n" + rows + "\n\n"
             r"**Answer:** a list of 5 words, each `'accept'`, `'reject'` or `'clip'`, in the "
-            r"order of the segments." "\n\n" + _data_note("box_min", "box_max", "segments"))
+            r"order of the segments." "\n\n" + data_note("box_min", "box_max", "segments"))
 
 
 def _cut(p, q, axis, value):
@@ -584,7 +588,7 @@ def _cut(p, q, axis, value):
 def _read_segment(answer, dim):
     """A segment as a (2, dim) array, the string "rejected", or a Feedback."""
     if _unanswered(answer):
-        return Feedback("unanswered", _UNANSWERED)
+        return Feedback("unanswered", UNANSWERED)
     if isinstance(answer, str):
         if answer.strip().lower() in ("rejected", "reject", "none", "outside", "empty"):
             return "rejected"
@@ -592,7 +596,7 @@ def _read_segment(answer, dim):
                         "`'rejected'` if nothing is left.", "unreadable")
     if isinstance(answer, (list, tuple)) and len(answer) == 0:
         return "rejected"
-    value = _read_floats(answer)
+    value = read_floats(answer)
     if value is None or value.shape != (2, dim):
         return Feedback("invalid", f"Give the clipped segment as two points, "
                         f"`[[{', '.join('x y z'.split()[:dim])}], [...]]` (shape (2, {dim})).",
@@ -713,10 +717,10 @@ class CohenSutherlandClip(_Listed):
             rf"$p_1 = {_vec(self.p1)}$ with the Cohen-Sutherland algorithm. Which segment "
             r"remains?" "\n\n"
             r"**Answer:** the clipped segment as two points `[[x0, y0], [x1, y1]]` (either end "
-            r"first). " + _DECIMALS + "\n\n" + _data_note("box_min", "box_max", "p0", "p1"))
+            r"first). " + DECIMALS + "\n\n" + data_note("box_min", "box_max", "p0", "p1"))
 
 
-class CohenSutherlandIntersections(_Drawn):
+class CohenSutherlandIntersections(DrawnExercise):
     r"""How many intersections Cohen-Sutherland computes for one segment.
 
     Each pass computes both outcodes; unless it accepts or rejects, it moves one outside end
@@ -765,17 +769,11 @@ class CohenSutherlandIntersections(_Drawn):
                     r"bit is used).", "one per bit"),
         ]
 
-    def setup(self, rng):
-        rng = np.random.default_rng([self.seed, zlib.crc32(type(self).__name__.encode())])
-        for _ in range(_MAX_DRAWS):
-            self.draw(rng)
-            if not self.acceptable():
-                continue
-            mistakes = _distinct_only(self.expected, self.mistakes())
-            if mistakes:
-                self._mistakes = mistakes
-                return
-        raise RuntimeError("CohenSutherlandIntersections: found no suitable variant")
+    def separated(self, mistakes):
+        return bool(_distinct_only(self.expected, mistakes))
+
+    def keep(self, mistakes):
+        return _distinct_only(self.expected, mistakes)
 
     def _check(self, answer):
         fb = super()._check(answer)
@@ -795,14 +793,14 @@ class CohenSutherlandIntersections(_Drawn):
             r"$p_1$, and the side of the **lowest** set bit (left, right, bottom, top in this "
             r"order). How many intersection points does it compute before it accepts or "
             r"rejects?" "\n\n" r"**Answer:** one whole number." "\n\n"
-            + _data_note("box_min", "box_max", "p0", "p1"))
+            + data_note("box_min", "box_max", "p0", "p1"))
 
 
 def _corner_biased_point(rng, lo, hi):
     """A whole point that is often in a corner region (beyond two sides) of the rectangle."""
     point = []
     for low, high in zip(lo, hi):
-        where = _pick(rng, ("below", "inside", "above", "below", "above"))
+        where = pick(rng, ("below", "inside", "above", "below", "above"))
         if where == "below":
             point.append(float(rng.integers(low - 3, low)))
         elif where == "above":
@@ -820,9 +818,9 @@ def _distinct_only(expected, mistakes):
     """
     kept = []
     for m in mistakes:
-        if _gap(m.value, expected) < _APART:
+        if gap(m.value, expected) < APART:
             continue
-        twin = next((k for k in kept if _gap(k.value, m.value) < _APART), None)
+        twin = next((k for k in kept if gap(k.value, m.value) < APART), None)
         if twin is None:
             kept.append(Mistake(m.value, m.explanation, m.key))
         else:
@@ -871,7 +869,7 @@ def _draw_lb_segment(rng, lo, hi):
             return p0, p1
 
 
-class LiangBarskyTable(_Drawn):
+class LiangBarskyTable(DrawnExercise):
     r"""Liang-Barsky's :math:`p_k`, :math:`q_k` and :math:`t_k = q_k / p_k` for the four sides.
 
     With :math:`\Delta = p_1 - p_0`: left :math:`(-\Delta x,\ x_0 - x_{min})`, right
@@ -918,20 +916,21 @@ class LiangBarskyTable(_Drawn):
 
     def _check(self, answer):
         if _unanswered(answer):
-            return Feedback("unanswered", _UNANSWERED)
-        value = _read_floats(answer)
+            return Feedback("unanswered", UNANSWERED)
+        value = read_floats(answer)
         if value is None or value.shape != (4, 3):
             return Feedback("invalid", "Give a 4 x 3 array: one row per side (left, right, "
                             "bottom, top), the columns p, q, t.", "unreadable")
-        if np.allclose(value, self.expected, rtol=1e-3, atol=2e-3):
-            return Feedback("correct", "The whole table is right.")
-        for mistake in self._mistakes:
-            if np.allclose(value, mistake.value, rtol=1e-3, atol=2e-3):
-                return Feedback("wrong", mistake.explanation, mistake.key)
+        fb = diagnose_matrix(value, self.expected, self._mistakes, what="the table",
+                             transform=False)
+        if fb.diagnosis not in ("sign", "entries differ"):
+            return fb
         off = ~np.isclose(value, self.expected, rtol=1e-3, atol=2e-3)
-        cells = [f"{'pqt'[j]} of {_SIDES_2D[i]}" for i, j in np.argwhere(off)]
-        return Feedback("wrong", f"These entries are off: {', '.join(cells)}. Each side reads "
-                        r"$p_k\,t \le q_k$; $t_k = q_k / p_k$.", "entries differ")
+        cells = ", ".join(f"{'pqt'[j]} of {_SIDES_2D[i]}" for i, j in np.argwhere(off))
+        lead = ("Right sizes, but these entries have the wrong sign:" if fb.diagnosis == "sign"
+                else "These entries are off:")
+        return Feedback("wrong", rf"{lead} {cells}. Each side reads $p_k\,t \le q_k$; "
+                        r"$t_k = q_k / p_k$.", fb.diagnosis)
 
     def statement(self):
         return (
@@ -940,11 +939,11 @@ class LiangBarskyTable(_Drawn):
             r"each side as $p_k\,t \le q_k$ (inside on the $\le$ side) and give $p_k$, $q_k$ "
             r"and $t_k = q_k / p_k$ for the four sides." "\n\n"
             r"**Answer:** a $4 \times 3$ numpy array, rows in the order left, right, bottom, "
-            r"top; columns $p_k$, $q_k$, $t_k$. " + _DECIMALS + "\n\n"
-            + _data_note("box_min", "box_max", "p0", "p1"))
+            r"top; columns $p_k$, $q_k$, $t_k$. " + DECIMALS + "\n\n"
+            + data_note("box_min", "box_max", "p0", "p1"))
 
 
-class LiangBarskyInterval(_Drawn):
+class LiangBarskyInterval(DrawnExercise):
     r"""Liang-Barsky's :math:`t_{in}` and :math:`t_{out}` for a segment that stays visible.
 
     :math:`t_{in} = \max(0, t_k \text{ for } p_k < 0)`,
@@ -996,7 +995,7 @@ class LiangBarskyInterval(_Drawn):
         variants = self._variants()
         return [(name, float(self.expected[i]),
                  [Mistake(v[i], text, key) for key, (v, text) in variants.items()
-                  if abs(v[i] - self.expected[i]) > _SAME])
+                  if abs(v[i] - self.expected[i]) > SAME])
                 for i, name in enumerate((r"$t_{in}$", r"$t_{out}$"))]
 
     def mistakes(self):
@@ -1006,10 +1005,10 @@ class LiangBarskyInterval(_Drawn):
         return _parts_separated(self._parts())
 
     def _check(self, answer):
-        return _parts_feedback(answer, self._parts(), "your interval", "`[t_in, t_out]`.",
-                               r"Tabulate $p_k$, $q_k$, $t_k = q_k / p_k$ for the four sides; "
-                               r"$t_{in}$ is the largest of 0 and the entering $t_k$ "
-                               r"($p_k < 0$), $t_{out}$ the smallest of 1 and the leaving ones.")
+        return diagnose_parts(answer, self._parts(), "your interval", "`[t_in, t_out]`.",
+                              r"Tabulate $p_k$, $q_k$, $t_k = q_k / p_k$ for the four sides; "
+                              r"$t_{in}$ is the largest of 0 and the entering $t_k$ "
+                              r"($p_k < 0$), $t_{out}$ the smallest of 1 and the leaving ones.")
 
     def statement(self):
         return (
@@ -1017,18 +1016,18 @@ class LiangBarskyInterval(_Drawn):
             rf"$p_1 = {_vec(self.p1)}$, $p(t) = p_0 + t\,(p_1 - p_0)$ with $0 \le t \le 1$, "
             r"with Liang-Barsky: what are $t_{in}$ and $t_{out}$ after all four sides? (Part "
             r"of this segment is visible.)" "\n\n"
-            r"**Answer:** a list of 2 numbers `[t_in, t_out]`. " + _DECIMALS + "\n\n"
-            + _data_note("box_min", "box_max", "p0", "p1"))
+            r"**Answer:** a list of 2 numbers `[t_in, t_out]`. " + DECIMALS + "\n\n"
+            + data_note("box_min", "box_max", "p0", "p1"))
 
 
 def _parts_separated(parts):
     """Each number's anticipated values differ from the answer and from each other."""
     for _, expected, mistakes in parts:
         for i, m in enumerate(mistakes):
-            if abs(float(m.value) - expected) < _APART:
+            if abs(float(m.value) - expected) < APART:
                 return False
             for other in mistakes[i + 1:]:
-                if other.key != m.key and abs(float(m.value) - float(other.value)) < _APART:
+                if other.key != m.key and abs(float(m.value) - float(other.value)) < APART:
                     return False
     return True
 
@@ -1052,7 +1051,7 @@ class LiangBarskyClip3D(_Listed):
     def draw(self, rng):
         self._want_rejected = bool(rng.random() < 0.3)
         self.box_min = rng.integers(-2, 1, size=3).astype(float)
-        self.box_max = self.box_min + float(_pick(rng, (2, 4)))
+        self.box_max = self.box_min + float(pick(rng, (2, 4)))
         while True:
             self.p0 = _ints_between(rng, self.box_min - 2, self.box_max + 2)
             self.p1 = _ints_between(rng, self.box_min - 2, self.box_max + 2)
@@ -1122,8 +1121,8 @@ class LiangBarskyClip3D(_Listed):
             r"$z \le z_{max}$). What is left of it?" "\n\n"
             r"**Answer:** the clipped segment as two points `[[x0, y0, z0], [x1, y1, z1]]` "
             r"(the end nearer $p_0$ first, though either order is accepted), or the string "
-            r"`'rejected'` if nothing is inside. " + _DECIMALS + "\n\n"
-            + _data_note("box_min", "box_max", "p0", "p1"))
+            r"`'rejected'` if nothing is inside. " + DECIMALS + "\n\n"
+            + data_note("box_min", "box_max", "p0", "p1"))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1143,8 +1142,8 @@ def _side_plane(side, value):
 
 def _read_polygon(answer):
     if _unanswered(answer):
-        return Feedback("unanswered", _UNANSWERED)
-    value = _read_floats(answer)
+        return Feedback("unanswered", UNANSWERED)
+    value = read_floats(answer)
     if value is None or value.ndim != 2 or value.shape[1] != 2:
         return Feedback("invalid", "Give the polygon as a list of points `[[x, y], ...]`.",
                         "unreadable")
@@ -1158,7 +1157,7 @@ _CONVEX_SHAPES = (
 )
 
 
-class SutherlandHodgmanOneSide(_Drawn):
+class SutherlandHodgmanOneSide(DrawnExercise):
     r"""Clip a polygon by one side of the clip rectangle with Sutherland-Hodgman's four rules.
 
     For each edge :math:`S \to E` (in order, the last back to the first): in-in gives E, in-out
@@ -1179,13 +1178,13 @@ class SutherlandHodgmanOneSide(_Drawn):
     answer_form = "custom"
 
     def draw(self, rng):
-        shape = np.array(_pick(rng, _CONVEX_SHAPES), dtype=float)
+        shape = np.array(pick(rng, _CONVEX_SHAPES), dtype=float)
         if rng.random() < 0.5:
             shape = shape * [-1, 1]
             shape = shape[::-1]                         # keep it counter-clockwise
         shape = np.roll(shape, int(rng.integers(len(shape))), axis=0)
         self.polygon = shape + rng.integers(-2, 3, size=2)
-        self.side = str(_pick(rng, tuple(_SIDE_PLANES)))
+        self.side = str(pick(rng, tuple(_SIDE_PLANES)))
         axis = _SIDE_PLANES[self.side][0]
         low, high = self.polygon[:, axis].min(), self.polygon[:, axis].max()
         self.value = float(rng.integers(int(low), int(high) + 1))
@@ -1285,10 +1284,10 @@ class SutherlandHodgmanOneSide(_Drawn):
             r"E; out-out: nothing)." "\n\n"
             r"**Answer:** the output vertices in order, as a list of points `[[x, y], ...]`. "
             r"Any starting vertex is accepted, but the order around the polygon matters. "
-            + _DECIMALS + "\n\n" + _data_note("polygon", "side", "value"))
+            + DECIMALS + "\n\n" + data_note("polygon", "side", "value"))
 
 
-class SutherlandHodgmanArea(_Drawn):
+class SutherlandHodgmanArea(DrawnExercise):
     r"""The vertex count and area of a triangle clipped to a rectangle (a corner is cut in).
 
     Attributes: ``triangle``, ``box_min``, ``box_max``.
@@ -1372,10 +1371,10 @@ class SutherlandHodgmanArea(_Drawn):
         return _parts_separated(self._parts())
 
     def _check(self, answer):
-        return _parts_feedback(answer, self._parts(), "your answer",
-                               "`[number_of_vertices, area]`.",
-                               "Clip by one side at a time, then compute the area of the final "
-                               "polygon with the shoelace formula.")
+        return diagnose_parts(answer, self._parts(), "your answer",
+                              "`[number_of_vertices, area]`.",
+                              "Clip by one side at a time, then compute the area of the final "
+                              "polygon with the shoelace formula.")
 
     def statement(self):
         return (
@@ -1384,8 +1383,8 @@ class SutherlandHodgmanArea(_Drawn):
             rf"{_box_words(self.box_min, self.box_max)} with Sutherland-Hodgman (against the "
             r"left, right, bottom and top sides in turn). How many vertices does the clipped "
             r"polygon have, and what is its area? (Draw it.)" "\n\n"
-            r"**Answer:** a list of 2 numbers `[number_of_vertices, area]`. " + _DECIMALS
-            + "\n\n" + _data_note("triangle", "box_min", "box_max"))
+            r"**Answer:** a list of 2 numbers `[number_of_vertices, area]`. " + DECIMALS
+            + "\n\n" + data_note("triangle", "box_min", "box_max"))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1479,7 +1478,7 @@ _ZBUFFER_RULES = (
     r"**less** than the stored one (nearer the viewer).")
 
 
-class ZBufferIds(_Drawn):
+class ZBufferIds(DrawnExercise):
     r"""The id buffer after drawing a few triangles with a depth test on a 4 x 4 grid.
 
     Attributes: ``triangles`` (one (3, 3) array per triangle: x, y, depth of each vertex).
@@ -1497,7 +1496,7 @@ class ZBufferIds(_Drawn):
     answer_form = "custom"
 
     def draw(self, rng):
-        self.triangles = _draw_scene(rng, int(_pick(rng, (2, 3))))
+        self.triangles = _draw_scene(rng, int(pick(rng, (2, 3))))
         self._fragments = _fragments(self.triangles)
         self.expected = _zbuffer(self._fragments)[0]
 
@@ -1522,8 +1521,8 @@ class ZBufferIds(_Drawn):
 
     def _check(self, answer):
         if _unanswered(answer):
-            return Feedback("unanswered", _UNANSWERED)
-        value = _read_floats(answer)
+            return Feedback("unanswered", UNANSWERED)
+        value = read_floats(answer)
         if value is None or value.shape != (_GRID, _GRID) or \
                 not np.all(value == np.round(value)):
             return Feedback("invalid", "Give a 4 x 4 array of whole numbers: the triangle "
@@ -1546,10 +1545,10 @@ class ZBufferIds(_Drawn):
             r"**Answer:** a $4 \times 4$ array `ids` of whole numbers with `ids[j][i]` the "
             r"triangle seen at pixel $(i, j)$ ($-1$ for the background). Row `j = 0` is the "
             r"**bottom** row of the picture, so printing the array shows the image upside "
-            r"down." "\n\n" + _data_note("triangles"))
+            r"down." "\n\n" + data_note("triangles"))
 
 
-class ZBufferWrites(_Drawn):
+class ZBufferWrites(DrawnExercise):
     r"""How many fragments pass the depth test (and are written) on a 4 x 4 grid.
 
     Attributes: ``triangles``.
@@ -1596,7 +1595,7 @@ class ZBufferWrites(_Drawn):
             + _scene_table(self.triangles) + "\n\n" + _ZBUFFER_RULES + "\n\n"
             r"How many fragments pass the depth test, i.e. how many times is a value written "
             r"into the z-buffer (counting every write, also those overwritten later)?" "\n\n"
-            r"**Answer:** one whole number." "\n\n" + _data_note("triangles"))
+            r"**Answer:** one whole number." "\n\n" + data_note("triangles"))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1605,8 +1604,8 @@ class ZBufferWrites(_Drawn):
 
 def _read_order(answer, n):
     if _unanswered(answer):
-        return Feedback("unanswered", _UNANSWERED)
-    value = _read_floats(answer)
+        return Feedback("unanswered", UNANSWERED)
+    value = read_floats(answer)
     if value is None or value.shape != (n,) or sorted(value.tolist()) != list(range(n)):
         return Feedback("invalid", f"Give the order as a list of the {n} polygon numbers "
                         f"0 to {n - 1}, each once.", "unreadable")
@@ -1691,7 +1690,7 @@ class PaintersOrder(_Listed):
             r"Each polygon is keyed by its **farthest** vertex, and the polygons are drawn from "
             r"the farthest to the nearest. In which order are they drawn?" "\n\n"
             r"**Answer:** the list of the 4 polygon numbers in drawing order, e.g. "
-            r"`[2, 0, 3, 1]`." "\n\n" + _data_note("depths"))
+            r"`[2, 0, 3, 1]`." "\n\n" + data_note("depths"))
 
 
 _STRIP = 8
@@ -1808,14 +1807,14 @@ class PainterFailure(_Listed):
             r"paints the farthest first. At which pixels does its picture differ from the true "
             r"one (the nearest segment at each pixel)?" "\n\n"
             r"**Answer:** the list of those pixel numbers $i$, e.g. `[2, 3]` (the order does "
-            r"not matter)." "\n\n" + _data_note("segments"))
+            r"not matter)." "\n\n" + data_note("segments"))
 
 
 # ---------------------------------------------------------------------------------------------
 # Ray casting
 # ---------------------------------------------------------------------------------------------
 
-class RayCastingCount(_Drawn):
+class RayCastingCount(DrawnExercise):
     r"""Counting intersection tests in ray casting, with and without bounding spheres.
 
     Brute force tests every ray against every triangle: :math:`p \cdot \sum P_i`. With one
@@ -1838,10 +1837,10 @@ class RayCastingCount(_Drawn):
     answer_form = "custom"
 
     def draw(self, rng):
-        self.width, self.height = (int(v) for v in _pick(rng, ((200, 100), (320, 240),
-                                                               (100, 100), (400, 300))))
-        m = int(_pick(rng, (2, 3)))
-        self.triangles = [int(_pick(rng, (200, 500, 1000, 2000))) for _ in range(m)]
+        self.width, self.height = (int(v) for v in pick(rng, ((200, 100), (320, 240),
+                                                              (100, 100), (400, 300))))
+        m = int(pick(rng, (2, 3)))
+        self.triangles = [int(pick(rng, (200, 500, 1000, 2000))) for _ in range(m)]
         pixels = self.width * self.height
         self.hits = [int(rng.integers(3, 31)) * pixels // 100 for _ in range(m)]
         self.expected = np.array([float(pixels * sum(self.triangles)),
@@ -1881,10 +1880,10 @@ class RayCastingCount(_Drawn):
         return _parts_separated(self._parts())
 
     def _check(self, answer):
-        return _parts_feedback(answer, self._parts(), "your counts",
-                               "`[without_bv, ray_triangle_with_bv, ray_sphere]`.",
-                               r"Count tests per ray and multiply by the number of rays "
-                               r"$p = w \cdot h$.")
+        return diagnose_parts(answer, self._parts(), "your counts",
+                              "`[without_bv, ray_triangle_with_bv, ray_sphere]`.",
+                              r"Count tests per ray and multiply by the number of rays "
+                              r"$p = w \cdot h$.")
 
     def statement(self):
         rows = "\n".join(f"| {i} | {t} | {k} |"
@@ -1901,7 +1900,7 @@ class RayCastingCount(_Drawn):
             r"against every triangle)? (b) With the bounding spheres, how many ray-triangle "
             r"tests are made? (c) And how many ray-sphere tests?" "\n\n"
             rf"**Answer:** a list of 3 whole numbers `[a, b, c]` (there are $p = {pixels}$ "
-            r"rays)." "\n\n" + _data_note("width", "height", "triangles", "hits"))
+            r"rays)." "\n\n" + data_note("width", "height", "triangles", "hits"))
 
 
 #: The exercises of chapter 5, in the order of the solutions notebook.

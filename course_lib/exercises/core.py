@@ -12,25 +12,50 @@ The diagnoses try, in order: the shape; exact agreement; the mistakes the exerci
 (each computed from the question, e.g. the product in the wrong order); generic mistakes
 (transposed, inverse, scaled, opposite sign, a few entries of the wrong sign); and otherwise
 which entries are off.
+
+Most exam questions are :class:`DrawnExercise` subclasses: they draw the question's numbers
+again until every anticipated mistake gives an answer of its own (distinct from the right one
+and from the other mistakes, see :func:`well_separated`), so that a diagnosis is never
+ambiguous, and they check an answer by its form (a matrix, a vector, a quaternion, a number, a
+point, or a form of their own). :func:`pick`, :func:`small_ints` and :func:`data_note` help to
+draw numbers that are pleasant by hand and to write the statement.
 """
 import math
+import zlib
 
 import numpy as np
 
 from .. import format as fmt
 
 __all__ = [
+    "DrawnExercise",
     "Exercise",
     "Feedback",
     "Mistake",
+    "data_note",
     "diagnose_matrix",
     "diagnose_number",
+    "diagnose_parts",
     "diagnose_vector",
+    "gap",
     "is_unanswered",
+    "pick",
+    "read_floats",
+    "small_ints",
+    "well_separated",
 ]
 
 #: Default absolute tolerance: answers computed by hand to 3 decimals pass.
 ATOL = 2e-3
+#: When the variants are drawn, answers closer than SAME count as the same answer, and every
+#: anticipated mistake must be at least APART from the right answer and from the other mistakes.
+SAME, APART = 1e-9, 0.05
+#: How many draws a :class:`DrawnExercise` tries before it gives up.
+MAX_DRAWS = 500
+#: The note on precision that ends most statements.
+DECIMALS = "Give at least 3 decimals (or let numpy compute them)."
+#: What an unanswered exercise says.
+UNANSWERED = "Replace the `...` with your answer and run the cell again."
 
 
 class Feedback:
@@ -111,13 +136,10 @@ def is_unanswered(answer):
     return answer is None or answer is Ellipsis
 
 
-_UNANSWERED = ("Replace the `...` with your answer and run the cell again.")
-
-
 def _read(answer, what):
     """The answer as a float array, or a Feedback saying why it cannot be read."""
     if is_unanswered(answer):
-        return Feedback("unanswered", _UNANSWERED)
+        return Feedback("unanswered", UNANSWERED)
     if isinstance(answer, (str, bytes)):
         return Feedback("invalid", f"Your answer is text ({answer!r}); give {what} as numbers.",
                         "not a number")
@@ -142,10 +164,35 @@ def _close(a, b, atol):
     return a.shape == b.shape and bool(np.allclose(a, b, rtol=1e-3, atol=atol))
 
 
-def _anticipated(value, mistakes, atol, expected, sign_free=False):
-    """The first anticipated mistake `value` matches (or its negative, when `sign_free`)."""
+def _multiple(value, of):
+    """The multiple ``c * of`` that agrees with `value` in the largest entry of `of`.
+
+    `of` itself when there is none (different shapes, or `of` is zero).
+    """
+    if value.shape != of.shape or not of.size:
+        return of
+    k = int(np.argmax(np.abs(of)))
+    if abs(of.flat[k]) < 1e-12:
+        return of
+    return value.flat[k] / of.flat[k] * of
+
+
+def _anticipated(value, mistakes, atol, expected, sign_free=False, projective=False):
+    """The first anticipated mistake `value` matches.
+
+    With `sign_free` a mistake's negative matches too; with `projective` any non-zero multiple
+    of it (a projective matrix and its multiples are the same transformation). A mistake that
+    gives the right answer (up to sign, or up to a factor) is passed over.
+    """
     signs = (1.0, -1.0) if sign_free else (1.0,)
+    value = np.asarray(value, dtype=float)
     for mistake in mistakes:
+        if projective:
+            wrong = _multiple(value, mistake.value)
+            if _close(value, wrong, atol) and np.abs(wrong).max(initial=0.0) > 1e-9 \
+                    and not _close(_multiple(mistake.value, expected), mistake.value, atol):
+                return Feedback("wrong", mistake.explanation, mistake.key)
+            continue
         for sign in signs:
             wrong = sign * mistake.value
             if _close(value, wrong, atol) and not _close(wrong, expected, atol) \
@@ -155,13 +202,18 @@ def _anticipated(value, mistakes, atol, expected, sign_free=False):
 
 
 def diagnose_matrix(answer, expected, mistakes=(), atol=ATOL, what="the matrix",
-                    homogeneous_scale=False):
+                    homogeneous_scale=False, transform=True):
     r"""Compare a matrix answer with the expected one and explain the difference.
 
     Checks, in order: readable and of the right shape (a 3x3 given where a homogeneous 4x4 is
     expected is named as such); correct; one of the anticipated `mistakes`; transposed; the
     inverse; a multiple of the expected matrix; the opposite sign; a few entries with the wrong
     sign; otherwise the entries that differ.
+
+    The generic feedback assumes a transformation matrix (column vectors, rotations,
+    translations). For other arrays (a table of numbers, an id buffer) pass ``transform=False``:
+    the feedback then speaks of rows, columns and entries only, and the inverse and the
+    homogeneous shape are not suggested.
 
     Parameters
     ----------
@@ -174,7 +226,10 @@ def diagnose_matrix(answer, expected, mistakes=(), atol=ATOL, what="the matrix",
     what : str
         How the feedback names the answer.
     homogeneous_scale : bool
-        Accept any non-zero multiple of `expected` (projective matrices, chapter 4).
+        Accept any non-zero multiple of `expected` (projective matrices, chapter 4), and
+        recognise any non-zero multiple of an anticipated mistake as that mistake.
+    transform : bool
+        Whether the matrix is a transformation (the default); False for other arrays.
 
     Returns
     -------
@@ -188,6 +243,9 @@ def diagnose_matrix(answer, expected, mistakes=(), atol=ATOL, what="the matrix",
     'transposed'
     >>> bool(diagnose_matrix(R, R)), diagnose_matrix(..., R).status
     (True, 'unanswered')
+    >>> table = np.array([[1.0, 2.0], [3.0, 4.0]])
+    >>> print(diagnose_matrix(table.T, table, what="the table", transform=False))
+    Not yet: The table is transposed: rows and columns are swapped.
     """
     expected = np.asarray(expected, dtype=float)
     value = _read(answer, what)
@@ -196,7 +254,7 @@ def diagnose_matrix(answer, expected, mistakes=(), atol=ATOL, what="the matrix",
     if value.shape != expected.shape:
         n = expected.shape[0]
         hint = ""
-        if value.ndim == 2 and value.shape == (n - 1, n - 1):
+        if transform and value.ndim == 2 and value.shape == (n - 1, n - 1):
             hint = (f" You gave a {n - 1}x{n - 1} matrix; the question asks for the homogeneous "
                     f"{n}x{n} one (the extra row and column carry the translation).")
         return Feedback("invalid", f"{_cap(what)} should have shape {expected.shape}, "
@@ -209,15 +267,16 @@ def diagnose_matrix(answer, expected, mistakes=(), atol=ATOL, what="the matrix",
             return Feedback("correct", f"{_cap(what)} is right: it is {fmt.number(ratio)} "
                             "times the reference matrix, and any non-zero multiple of a "
                             "projective matrix is the same transformation.")
-    found = _anticipated(value, mistakes, atol, expected)
+    found = _anticipated(value, mistakes, atol, expected, projective=homogeneous_scale)
     if found is not None:
         return found
     n = expected.shape[-1]
     if expected.ndim == 2 and expected.shape[0] == n and _close(value, expected.T, atol):
-        return Feedback("wrong", f"{_cap(what)} is transposed: rows and columns are "
-                        "swapped. With column vectors ($p' = Mp$) the images of the axes are the "
-                        "*columns*, and a translation sits in the last *column*.", "transposed")
-    if expected.ndim == 2 and expected.shape[0] == n:
+        why = (" With column vectors ($p' = Mp$) the images of the axes are the *columns*, and "
+               "a translation sits in the last *column*." if transform else "")
+        return Feedback("wrong", f"{_cap(what)} is transposed: rows and columns are swapped."
+                        + why, "transposed")
+    if transform and expected.ndim == 2 and expected.shape[0] == n:
         try:
             inv = np.linalg.inv(expected)
         except np.linalg.LinAlgError:
@@ -230,9 +289,10 @@ def diagnose_matrix(answer, expected, mistakes=(), atol=ATOL, what="the matrix",
     if ratio is not None and not math.isclose(ratio, 1.0, rel_tol=1e-3):
         if math.isclose(ratio, -1.0, rel_tol=1e-3):
             return Feedback("wrong", "Every entry has the wrong sign.", "opposite sign")
-        return Feedback("wrong", f"Your matrix is {fmt.number(ratio)} times the right one: "
+        mine = "Your matrix" if transform else _cap(what)
+        return Feedback("wrong", f"{mine} is {fmt.number(ratio)} times the right one: "
                         "a factor is missing or doubled somewhere.", "scaled")
-    return _entrywise(value, expected, atol, what)
+    return _entrywise(value, expected, atol, what, transform)
 
 
 def _common_ratio(value, expected):
@@ -245,16 +305,16 @@ def _common_ratio(value, expected):
     return ratio if np.allclose(value, ratio * expected, rtol=1e-3, atol=1e-6) else None
 
 
-def _entrywise(value, expected, atol, what):
+def _entrywise(value, expected, atol, what, transform=True):
     off = ~np.isclose(value, expected, rtol=1e-3, atol=atol)
     sign_only = off & np.isclose(value, -expected, rtol=1e-3, atol=atol)
     cells = [tuple(int(i) for i in idx) for idx in np.argwhere(off)]
     listed = ", ".join(str(c) for c in cells[:6]) + (" ..." if len(cells) > 6 else "")
     if off.sum() == sign_only.sum():
+        hint = (": check the direction of each rotation (where does the $-\\sin\\theta$ go?) "
+                "and the sign of each displacement." if transform else ".")
         return Feedback("wrong", f"Right magnitudes but the wrong sign in entries {listed} (row, "
-                        "column, counted from 0): check the direction of each rotation (where "
-                        "does the $-\\sin\\theta$ go?) and the sign of each displacement.",
-                        "sign")
+                        "column, counted from 0)" + hint, "sign")
     worst = max(cells, key=lambda c: abs(value[c] - expected[c]))
     return Feedback("wrong", f"{len(cells)} of {value.size} entries of {what} are off, at "
                     f"{listed} (row, column, counted from 0); the largest difference is "
@@ -391,12 +451,15 @@ class Exercise:
     A subclass sets ``title`` and implements ``setup(rng)`` (draw the question's numbers and
     compute the expected answer with ``course_lib``), ``statement()`` (Markdown with LaTeX) and
     ``check(answer)`` (usually one call of a ``diagnose_*`` function with the anticipated
-    mistakes). Display the exercise to read the question.
+    mistakes). Display the exercise to read the question. An exam question with anticipated
+    mistakes is best written as a :class:`DrawnExercise`, which does the drawing and checking.
 
     Parameters
     ----------
     seed : int, optional
-        Chooses the variant; the same seed always gives the same question.
+        Chooses the variant; the same seed always gives the same question. Each exercise class
+        draws from a stream of its own, salted by the class name, so that the exercises of a
+        notebook that share one ``SEED`` do not share their numbers.
 
     Examples
     --------
@@ -420,7 +483,8 @@ class Exercise:
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)):
             raise TypeError(f"seed must be an integer, got {type(seed).__name__}")
         self.seed = int(seed)
-        self.setup(np.random.default_rng(self.seed))
+        salt = zlib.crc32(type(self).__name__.encode())
+        self.setup(np.random.default_rng([self.seed, salt]))
 
     def setup(self, rng):
         """Draw the numbers of the question from `rng` and compute the expected answer."""
@@ -440,3 +504,393 @@ class Exercise:
     def __repr__(self):
         return f"{type(self).__name__}(seed={self.seed})"
 
+
+# ---------------------------------------------------------------------------------------------
+# Exercises drawn until their anticipated mistakes are distinct
+# ---------------------------------------------------------------------------------------------
+
+def read_floats(value):
+    """`value` as a finite float array, or None when it cannot be read.
+
+    Placeholders, text, dicts and sets are not read; neither are ragged lists or answers with
+    NaN or infinity.
+
+    Parameters
+    ----------
+    value : object
+
+    Returns
+    -------
+    numpy.ndarray or None
+
+    Examples
+    --------
+    >>> read_floats([[1, 2], [3, 4]]).shape
+    (2, 2)
+    >>> read_floats("1, 2") is None, read_floats([1, float("nan")]) is None, read_floats(...)
+    (True, True, None)
+    """
+    if value is None or value is Ellipsis or isinstance(value, (str, bytes, dict, set)):
+        return None
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        return None
+    return arr if np.isfinite(arr).all() else None
+
+
+def gap(a, b, sign_free=False, projective=False):
+    """The largest componentwise difference of two answers: how far apart they are.
+
+    Parameters
+    ----------
+    a, b : array_like
+    sign_free : bool
+        Also compare `a` with ``-b`` and take the nearer (a quaternion and its negative are the
+        same rotation).
+    projective : bool
+        Measure how far `a` is from every multiple of `b` (a projective matrix and its
+        multiples are the same transformation): the multiple that agrees with `a` in the
+        largest entry of `b` is compared.
+
+    Returns
+    -------
+    float
+        Infinite for answers of different shapes.
+
+    Examples
+    --------
+    >>> gap([1, 2], [1, 2.5]), gap([1, 2], [1, 2, 3])
+    (0.5, inf)
+    >>> gap([0.5, -0.5], [-0.5, 0.5], sign_free=True)
+    0.0
+    >>> gap([2, 4], [-1, -2], projective=True)
+    0.0
+    """
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    if a.shape != b.shape:
+        return math.inf
+    if a.size == 0:
+        return 0.0
+    if projective:
+        return gap(a, _multiple(a, b))
+    distance = float(np.abs(a - b).max())
+    if sign_free:
+        distance = min(distance, float(np.abs(a + b).max()))
+    return distance
+
+
+def well_separated(expected, mistakes, may_coincide=(), sign_free=False, projective=False):
+    """True when every anticipated mistake can be told apart from the answer and the others.
+
+    A mistake whose key is in `may_coincide` may give exactly the right answer in some variants
+    (then it is simply right); otherwise each mistake must differ from the right answer by at
+    least ``APART`` (0.05, far more than the rounding of a hand computation), and the mistakes
+    of different keys must differ from each other by as much. Distances are measured by
+    :func:`gap`, with the same `sign_free` and `projective` (for two mistakes: either way round).
+
+    Parameters
+    ----------
+    expected : array_like
+    mistakes : sequence of Mistake
+    may_coincide : collection of str
+    sign_free, projective : bool
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> right = [1.0, 2.0]
+    >>> well_separated(right, [Mistake([2, 1], "Swapped.", "swapped")])
+    True
+    >>> well_separated(right, [Mistake([1, 2.01], "Rounded.", "rounded")])
+    False
+    >>> well_separated(right, [Mistake(right, "Same here.", "same")], may_coincide=("same",))
+    True
+    """
+    def apart(a, b):
+        if projective:
+            return min(gap(a, b, projective=True), gap(b, a, projective=True))
+        return gap(a, b, sign_free)
+
+    live = []
+    for mistake in mistakes:
+        distance = gap(mistake.value, expected, sign_free, projective)
+        if distance <= SAME and mistake.key in may_coincide:
+            continue
+        if distance < APART:
+            return False
+        live.append(mistake)
+    for i, mistake in enumerate(live):
+        for other in live[i + 1:]:
+            if other.key != mistake.key and apart(mistake.value, other.value) < APART:
+                return False
+    return True
+
+
+def diagnose_parts(answer, parts, what, form_hint, hint=""):
+    r"""Judge an answer made of several numbers, each with its own anticipated mistakes.
+
+    Parameters
+    ----------
+    answer : object
+    parts : list of (str, float, list of Mistake)
+        The name of each number, its expected value and the slips anticipated for it.
+    what : str
+        How the feedback names the whole answer.
+    form_hint : str
+        What to type, for an answer that cannot be read.
+    hint : str
+        How to get the numbers right, for wrong numbers that match no anticipated slip.
+
+    Returns
+    -------
+    Feedback
+        Correct when every number is right; otherwise the explanation of the first anticipated
+        slip found (its key is the diagnosis), followed by the list of the numbers that are right
+        and wrong.
+
+    Examples
+    --------
+    >>> parts = [("the sum", 5.0, []),
+    ...          ("the product", 6.0, [Mistake(5.0, "That is the sum.", "added")])]
+    >>> diagnose_parts([5, 6], parts, "your answer", "`[sum, product]`").status
+    'correct'
+    >>> print(diagnose_parts([5, 5], parts, "your answer", "`[sum, product]`"))
+    Not yet: *The product:* That is the sum. Right: the sum. Not yet: the product.
+    >>> diagnose_parts([5, ...], parts, "your answer", "`[sum, product]`").status
+    'unanswered'
+    """
+    if is_unanswered(answer) or (isinstance(answer, (list, tuple))
+                                 and any(is_unanswered(a) for a in answer)):
+        return Feedback("unanswered", UNANSWERED)
+    values = read_floats(answer)
+    if values is None or values.shape != (len(parts),):
+        return Feedback("invalid", f"{_cap(what)} should be {len(parts)} numbers: {form_hint}",
+                        "unreadable")
+    wrong, found = [], None
+    for value, (name, expected, mistakes) in zip(values, parts):
+        if math.isclose(value, expected, rel_tol=1e-3, abs_tol=ATOL):
+            continue
+        wrong.append(name)
+        if found is None:
+            for mistake in mistakes:
+                if _close(value, mistake.value, ATOL) and not _close(mistake.value, expected,
+                                                                     ATOL):
+                    found = (name, mistake)
+                    break
+    if not wrong:
+        return Feedback("correct", f"All {len(parts)} numbers are right.")
+    right = [name for name, _, _ in parts if name not in wrong]
+    summary = (f" Right: {', '.join(right)}." if right else "") + \
+        f" Not yet: {', '.join(wrong)}."
+    if found is not None:
+        name, mistake = found
+        return Feedback("wrong", f"*{_cap(name)}:* {mistake.explanation}" + summary,
+                        mistake.key)
+    return Feedback("wrong", f"Some of your numbers are off.{summary} {hint}".rstrip(),
+                    "value differs")
+
+
+def _as_point(answer, dim, projective):
+    """A point answer given with a homogeneous coordinate, reduced to `dim` numbers.
+
+    Returns the answer to compare (unchanged when it has `dim` entries or cannot be read), or a
+    Feedback when it is homogeneous with :math:`w \\ne 1`.
+    """
+    arr = read_floats(answer)
+    if arr is None or arr.shape != (dim + 1,):
+        return answer
+    w = float(arr[-1])
+    if math.isclose(w, 1.0, abs_tol=1e-3):
+        return arr[:-1]
+    if projective and abs(w) > 1e-12:
+        return Feedback("wrong", f"You gave homogeneous coordinates with $w = {fmt.number(w)}$. "
+                        r"The point they stand for is found by the **homogeneous divide**: "
+                        r"divide the other coordinates by $w$ (then $w$ becomes 1).", "no divide")
+    return Feedback("invalid", f"Give the point as {dim} numbers (ordinary coordinates).",
+                    "wrong shape")
+
+
+class DrawnExercise(Exercise):
+    r"""An exercise drawn until its anticipated mistakes are distinct, checked by answer form.
+
+    ``setup`` calls ``draw(rng)`` until the variant is ``acceptable()`` and the mistakes it
+    anticipates are :func:`well_separated` (each gives an answer of its own, distinct from the
+    right one and from the others), so that a diagnosis is never ambiguous; it gives up with a
+    RuntimeError after ``MAX_DRAWS`` draws. The mistakes of the accepted variant (those that
+    differ from the right answer, see ``keep``) are computed once and reused by every ``check``.
+
+    A subclass sets ``title`` and implements ``draw(rng)`` (set the question's attributes and
+    ``self.expected``), ``mistakes()`` (the :class:`Mistake`\ s computed from the question) and
+    ``statement()``; optionally ``acceptable()``, and for a form of its own ``_check(answer)``.
+    ``check`` never raises: an answer the checker cannot handle is reported as unreadable.
+
+    Attributes
+    ----------
+    answer_form : {"matrix", "vector", "quaternion", "number", "point", "custom"}
+        How an answer is judged: :func:`diagnose_matrix`; :func:`diagnose_vector`; a unit
+        quaternion (``q`` and ``-q`` are both right, and so are the negatives of the
+        mistakes); :func:`diagnose_number`; a point, also accepted as a homogeneous vector with
+        ``w = 1``; or the subclass's ``_check``.
+    what : str
+        How the feedback names the answer (``"the matrix"``).
+    may_coincide : tuple of str
+        Keys of mistakes that may give the right answer in some variants (then they are simply
+        right) instead of forcing a new draw.
+    homogeneous_scale : bool
+        Matrix form: any non-zero multiple of the answer is right, and any non-zero multiple of
+        a mistake is that mistake (a projective matrix).
+    projective_point : bool
+        Point form: a homogeneous answer with ``w != 1`` is named as a forgotten homogeneous
+        divide.
+
+    Examples
+    --------
+    >>> class Double(DrawnExercise):
+    ...     title = "Double a number"
+    ...     answer_form = "number"
+    ...     what = "the double"
+    ...     def draw(self, rng):
+    ...         self.x = int(rng.integers(1, 10))
+    ...         self.expected = 2 * self.x
+    ...     def mistakes(self):
+    ...         return [Mistake(self.x + 2, "You added 2 instead of doubling.", "added")]
+    ...     def statement(self):
+    ...         return f"What is $2 \\times {self.x}$?"
+    >>> ex = Double(seed=1)
+    >>> ex.x != 2               # 2 + 2 = 2 * 2: that variant is never drawn
+    True
+    >>> ex.check(2 * ex.x).status, ex.check(ex.x + 2).diagnosis, ex.check(...).status
+    ('correct', 'added', 'unanswered')
+    """
+
+    answer_form = "matrix"
+    what = "the matrix"
+    may_coincide = ()
+    homogeneous_scale = False
+    projective_point = False
+
+    def setup(self, rng):
+        """Draw variants from `rng` until one is acceptable with well-separated mistakes."""
+        for _ in range(MAX_DRAWS):
+            self.draw(rng)
+            if not self.acceptable():
+                continue
+            mistakes = self.mistakes()
+            if self.separated(mistakes):
+                self._mistakes = self.keep(mistakes)
+                return
+        raise RuntimeError(f"{type(self).__name__}: found no variant whose anticipated mistakes "
+                           "are distinct")
+
+    def draw(self, rng):
+        """Draw the numbers of the question and compute ``self.expected``."""
+        raise NotImplementedError
+
+    def acceptable(self):
+        """Whether the drawn variant is usable (beyond the separation of the mistakes)."""
+        return True
+
+    def mistakes(self):
+        """The anticipated wrong answers, computed from the question."""
+        return []
+
+    def _gap(self, a, b):
+        return gap(a, b, sign_free=self.answer_form == "quaternion",
+                   projective=self.homogeneous_scale)
+
+    def keep(self, mistakes):
+        """The mistakes worth checking in this variant (those that differ from the answer)."""
+        return [m for m in mistakes if self._gap(m.value, self.expected) > SAME]
+
+    def separated(self, mistakes):
+        """Whether the anticipated mistakes can be told apart (see :func:`well_separated`)."""
+        return well_separated(self.expected, mistakes, self.may_coincide,
+                              sign_free=self.answer_form == "quaternion",
+                              projective=self.homogeneous_scale)
+
+    def check(self, answer):
+        """Judge `answer` and say what is wrong with it; never raises.
+
+        Parameters
+        ----------
+        answer : object
+            The student's answer in the form the statement asks for.
+
+        Returns
+        -------
+        Feedback
+        """
+        try:
+            return self._check(answer)
+        except Exception as exc:          # a checker must never stop the notebook
+            return Feedback("invalid", f"Your answer could not be checked ({exc}); give it in "
+                            "the form the question asks for.", "unreadable")
+
+    def _check(self, answer):
+        form, mistakes = self.answer_form, self._mistakes
+        if form == "matrix":
+            return diagnose_matrix(answer, self.expected, mistakes, what=self.what,
+                                   homogeneous_scale=self.homogeneous_scale)
+        if form == "vector":
+            return diagnose_vector(answer, self.expected, mistakes, what=self.what)
+        if form == "quaternion":
+            return diagnose_vector(answer, self.expected, mistakes, what=self.what, unit=True,
+                                   sign_free=True)
+        if form == "number":
+            return diagnose_number(answer, self.expected, mistakes, what=self.what)
+        if form == "point":
+            reduced = _as_point(answer, len(self.expected), self.projective_point)
+            if isinstance(reduced, Feedback):
+                return reduced
+            return diagnose_vector(reduced, self.expected, mistakes, what=self.what)
+        raise NotImplementedError(f"{type(self).__name__}: answer_form {form!r} needs a _check")
+
+
+# ---------------------------------------------------------------------------------------------
+# Numbers that are pleasant by hand, and the statement's last line
+# ---------------------------------------------------------------------------------------------
+
+def pick(rng, options):
+    """One element of the sequence `options`, drawn with `rng`.
+
+    Unlike ``rng.choice`` it keeps the element as it is (a tuple stays a tuple).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> pick(np.random.default_rng(0), [(1, 2), (3, 4)]) in [(1, 2), (3, 4)]
+    True
+    """
+    return options[int(rng.integers(len(options)))]
+
+
+def small_ints(rng, n, low=-3, high=3):
+    """A non-zero vector of `n` whole numbers in [low, high], as floats.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> v = small_ints(np.random.default_rng(0), 3)
+    >>> v.shape, bool(v.any()), bool(np.all(np.abs(v) <= 3)), bool(np.all(v == np.round(v)))
+    ((3,), True, True, True)
+    """
+    while True:
+        v = rng.integers(low, high + 1, size=n).astype(float)
+        if np.any(v):
+            return v
+
+
+def data_note(*names):
+    """The note that ends a statement: where the question's numbers are, as attributes.
+
+    Examples
+    --------
+    >>> print(data_note("theta", "d"))
+    *The numbers of this question are the attributes `.theta`, `.d` of the exercise object.*
+    """
+    listed = ", ".join(f"`.{name}`" for name in names)
+    return f"*The numbers of this question are the attributes {listed} of the exercise object.*"
