@@ -766,11 +766,15 @@ def apply(M, points):
     if m.shape[0] != d + 1:
         raise ValueError(f"M is {m.shape[0]}x{m.shape[0]} but the points are {d}D: use a "
                          f"{d + 1}x{d + 1} homogeneous matrix for {d}D points")
-    linear_part = p @ m[:d, :d].T + m[:d, d]
-    w = p @ m[d, :d] + m[d, d]
+    # one product for all d + 1 output coordinates, then in-place updates: big temporary arrays
+    # cost more than the arithmetic (fresh memory has to be faulted in)
+    out = p @ m[:, :d].T
+    out += m[:, d]
+    w = out[..., d]
     if np.all(w == 1.0):
-        return linear_part
+        return out[..., :d]
     if np.any(np.abs(w) < 1e-300):
         raise ValueError("M maps a point to infinity (homogeneous coordinate w = 0 after the "
                          "transformation)")
-    return linear_part / w[..., None]
+    out[..., :d] /= w[..., None]
+    return out[..., :d]
