@@ -21,6 +21,7 @@ ALGORITHM_MODULES = ("course_lib.transforms", "course_lib.quaternions", "course_
                      "course_lib.curves", "course_lib.surfaces")
 DOCUMENTED_MODULES = ALGORITHM_MODULES + (
     "course_lib.draw", "course_lib.exercises.build", "course_lib.exercises.ch03",
+    "course_lib.exercises.ch04", "course_lib.exercises.ch05", "course_lib.exercises.ch07",
     "course_lib.widgets._base", "course_lib.widgets.quaternion", "course_lib.widgets.slerp",
     "course_lib.widgets.gimbal", "course_lib.widgets.composer", "course_lib.widgets.camera",
     "course_lib.widgets.cohen_sutherland", "course_lib.widgets.liang_barsky",
