@@ -772,6 +772,9 @@ class DrawnExercise(Exercise):
     may_coincide = ()
     homogeneous_scale = False
     projective_point = False
+    #: The answer is a transformation matrix (False: a table, a list of points...): chooses the
+    #: wording of the generic diagnoses of :func:`diagnose_matrix`.
+    transform = True
 
     def setup(self, rng):
         """Draw variants from `rng` until one is acceptable with well-separated mistakes."""
@@ -834,7 +837,8 @@ class DrawnExercise(Exercise):
         form, mistakes = self.answer_form, self._mistakes
         if form == "matrix":
             return diagnose_matrix(answer, self.expected, mistakes, what=self.what,
-                                   homogeneous_scale=self.homogeneous_scale)
+                                   homogeneous_scale=self.homogeneous_scale,
+                                   transform=self.transform)
         if form == "vector":
             return diagnose_vector(answer, self.expected, mistakes, what=self.what)
         if form == "quaternion":
