@@ -18,7 +18,8 @@ NOTEBOOK_DIRS = ("notebooks", "solutions", "exercises")
 ALGORITHM_MODULES = ("course_lib.transforms", "course_lib.quaternions", "course_lib.format",
                      "course_lib.shapes", "course_lib._validate", "course_lib.exercises.core",
                      "course_lib.viewing", "course_lib.clipping", "course_lib.visibility",
-                     "course_lib.curves", "course_lib.surfaces")
+                     "course_lib.curves", "course_lib.surfaces", "course_lib.shading",
+                     "course_lib.texturing")
 DOCUMENTED_MODULES = ALGORITHM_MODULES + (
     "course_lib.draw", "course_lib.exercises.build", "course_lib.exercises.ch03",
     "course_lib.exercises.ch04", "course_lib.exercises.ch05", "course_lib.exercises.ch07",

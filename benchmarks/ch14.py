@@ -1,0 +1,44 @@
+"""Chapter 14: texture sampling against scipy.ndimage.map_coordinates."""
+import numpy as np
+
+from benchmarks import operation_row
+
+
+def operations(quick=False):
+    from scipy import ndimage
+
+    from course_lib import texturing
+
+    n = 20_000 if quick else 1_000_000
+    repeat = 3 if quick else 11
+    rng = np.random.default_rng(14)
+    grey = rng.uniform(0, 1, (1024, 1024))
+    rgb = rng.uniform(0, 1, (512, 512, 3))
+    u, v = rng.uniform(-0.5, 1.5, n), rng.uniform(-0.5, 1.5, n)
+
+    def coords(texture):
+        """Our texel-centre convention in scipy's array coordinates (row, column)."""
+        h, w = texture.shape[:2]
+        return np.stack([v * h - 0.5, u * w - 0.5])
+
+    c_grey, c_rgb = coords(grey), coords(rgb)       # conversion not timed: scipy's input
+    sci = "scipy map_coordinates"
+    return [
+        operation_row("bilinear sampling, grey 1024x1024, repeat", n,
+                      lambda: texturing.bilinear_sample(grey, u, v, "repeat"),
+                      lambda: ndimage.map_coordinates(grey, c_grey, order=1, mode="grid-wrap"),
+                      sci + " (order=1)", repeat),
+        operation_row("bilinear sampling, RGB 512x512, clamp", n,
+                      lambda: texturing.bilinear_sample(rgb, u, v, "clamp"),
+                      lambda: [ndimage.map_coordinates(rgb[..., c], c_rgb, order=1,
+                                                       mode="nearest") for c in range(3)],
+                      sci + " (order=1, per channel)", repeat),
+        operation_row("nearest sampling, grey 1024x1024, repeat", n,
+                      lambda: texturing.nearest_sample(grey, u, v, "repeat"),
+                      lambda: ndimage.map_coordinates(grey, c_grey, order=0, mode="grid-wrap"),
+                      sci + " (order=0)", repeat),
+    ]
+
+
+def widgets(quick=False):
+    return []
