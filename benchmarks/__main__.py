@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 CHAPTERS = ["benchmarks.ch03", "benchmarks.ch04", "benchmarks.ch05", "benchmarks.ch07", "benchmarks.ch12",
-            "benchmarks.ch14"]
+            "benchmarks.ch14", "benchmarks.ch18"]
 HERE = Path(__file__).resolve().parent
 
 

@@ -19,7 +19,7 @@ ALGORITHM_MODULES = ("course_lib.transforms", "course_lib.quaternions", "course_
                      "course_lib.shapes", "course_lib._validate", "course_lib.exercises.core",
                      "course_lib.viewing", "course_lib.clipping", "course_lib.visibility",
                      "course_lib.curves", "course_lib.surfaces", "course_lib.shading",
-                     "course_lib.texturing")
+                     "course_lib.texturing", "course_lib.colormaps", "course_lib.scivis")
 DOCUMENTED_MODULES = ALGORITHM_MODULES + (
     "course_lib.draw", "course_lib.exercises.build", "course_lib.exercises.ch03",
     "course_lib.exercises.ch04", "course_lib.exercises.ch05", "course_lib.exercises.ch07",
