@@ -19,7 +19,7 @@ LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 .PHONY: lab test system-packages exercises notebooks benchmarks clean
 
 lab: $(STAMP)
-	@scripts/system-packages --warn-only
+	@scripts/system-packages --warn-only --no-browser
 	$(BIN)/jupyter lab --ServerApp.root_dir=. --LabApp.default_url=/lab/tree/notebooks $(LAB_ARGS)
 
 test: $(STAMP)

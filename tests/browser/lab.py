@@ -1,0 +1,221 @@
+"""Drive JupyterLab in headless chromium: start a server, open a notebook, run it, inspect it.
+
+Measured facts this builds on (see CONTRIBUTING.md): Debian's chromium driven by PyPI's
+playwright (never a downloaded browser), launched with a fresh profile and the flags below; a
+JupyterLab server started as one plain background process on a free loopback port with a token,
+polled on /api/status, stopped with SIGTERM; every Jupyter and matplotlib directory pointed into
+a temporary folder so that nothing touches the user's home.
+"""
+import json
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
+CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+                  "--no-first-run", "--disable-background-networking",
+                  "--disable-component-update", "--disable-sync"]
+ARTIFACTS = ROOT / "test-artifacts" / "browser"
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class LabServer:
+    """A JupyterLab server on a free loopback port, with its own config and settings."""
+
+    def __init__(self, tmp):
+        self.tmp = Path(tmp)
+        self.port = free_port()
+        self.token = "course-test-token"
+        self.url = f"http://127.0.0.1:{self.port}"
+        self.process = None
+
+    def environment(self):
+        env = dict(os.environ)
+        for name in ("JUPYTER_CONFIG_DIR", "JUPYTER_DATA_DIR", "JUPYTER_RUNTIME_DIR",
+                     "IPYTHONDIR", "MPLCONFIGDIR", "XDG_CACHE_HOME", "XDG_CONFIG_HOME"):
+            path = self.tmp / name.lower()
+            path.mkdir(parents=True, exist_ok=True)
+            env[name] = str(path)
+        settings = self.tmp / "lab-settings" / "@jupyterlab" / "apputils-extension"
+        settings.mkdir(parents=True, exist_ok=True)
+        (settings / "notification.jupyterlab-settings").write_text(
+            json.dumps({"fetchNews": "false", "checkForUpdates": False}))
+        env["JUPYTERLAB_SETTINGS_DIR"] = str(self.tmp / "lab-settings")
+        env["JUPYTERLAB_WORKSPACES_DIR"] = str(self.tmp / "workspaces")
+        return env
+
+    def start(self, timeout=60):
+        jupyter = Path(sys.executable).with_name("jupyter")
+        log = open(self.tmp / "server.log", "w")
+        self.process = subprocess.Popen(
+            [str(jupyter), "lab", "--no-browser", "--allow-root", "--ip", "127.0.0.1",
+             "--port", str(self.port), f"--IdentityProvider.token={self.token}",
+             f"--ServerApp.root_dir={ROOT}"],
+            env=self.environment(), stdout=log, stderr=subprocess.STDOUT)
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if self.process.poll() is not None:
+                raise RuntimeError(f"JupyterLab exited early:\n{(self.tmp / 'server.log').read_text()[-3000:]}")
+            try:
+                urllib.request.urlopen(f"{self.url}/api/status?token={self.token}", timeout=2)
+                return self
+            except OSError:
+                time.sleep(0.3)
+        self.stop()
+        raise RuntimeError("JupyterLab did not answer within {timeout} s")
+
+    def stop(self):
+        if self.process is not None and self.process.poll() is None:
+            self.process.send_signal(signal.SIGTERM)
+            try:
+                self.process.wait(timeout=15)
+            except subprocess.TimeoutExpired:
+                self.process.kill()
+                self.process.wait()
+        self.process = None
+
+
+def launch_browser(playwright, profile):
+    if not Path(CHROMIUM).exists():
+        raise RuntimeError("chromium is not installed: scripts/system-packages installs the "
+                           "Debian package 'chromium' (run `make test`, or apt-get install "
+                           "chromium)")
+    return playwright.chromium.launch_persistent_context(
+        str(profile), executable_path=CHROMIUM, headless=True, args=CHROMIUM_FLAGS,
+        viewport={"width": 1400, "height": 1000})
+
+
+class NotebookPage:
+    """One notebook open in JupyterLab: run it, find its widgets, read its errors."""
+
+    def __init__(self, context, server, path):
+        self.page = context.new_page()
+        self.console_errors = []
+        self.page.on("console", lambda m: self.console_errors.append(m.text)
+                     if m.type == "error" else None)
+        self.page.on("pageerror", lambda e: self.console_errors.append(str(e)))
+        self.server, self.path = server, path
+
+    def open(self, timeout=90_000):
+        self.page.goto(f"{self.server.url}/lab/tree/{self.path}?token={self.server.token}&reset")
+        self.page.wait_for_selector(".jp-Notebook-ExecutionIndicator[data-status='idle']",
+                                    timeout=timeout)
+        return self
+
+    def run_all(self, timeout=300_000):
+        self.page.click("text=Run", timeout=10_000)
+        self.page.click("text=Run All Cells", timeout=10_000)
+        time.sleep(2)
+        self.page.wait_for_selector(".jp-Notebook-ExecutionIndicator[data-status='idle']",
+                                    timeout=timeout)
+        # cells still queued show [*]: wait until every prompt has a number
+        deadline = time.monotonic() + timeout / 1000
+        while time.monotonic() < deadline:
+            if not self.page.locator(".jp-InputPrompt:has-text('[*]')").count():
+                break
+            time.sleep(0.5)
+        time.sleep(2)                     # widget views and first ipympl frames arrive
+        return self
+
+    def error_outputs(self):
+        """Texts of error and stderr outputs in the notebook."""
+        items = self.page.locator(".jp-OutputArea-output[data-mime-type="
+                                  "'application/vnd.jupyter.stderr'], "
+                                  ".jp-OutputArea-output[data-mime-type="
+                                  "'application/vnd.jupyter.error'], "
+                                  ".jp-RenderedText[data-mime-type='application/vnd.jupyter.error']")
+        return [items.nth(k).inner_text()[:500] for k in range(items.count())]
+
+    def widget_problems(self):
+        """Outputs where a widget failed to show ('Error displaying widget' and the like)."""
+        texts = self.page.locator(".jp-OutputArea-output:has-text('Error displaying widget'), "
+                                  ".jp-OutputArea-output:has-text('Error rendering')")
+        return [texts.nth(k).inner_text()[:300] for k in range(texts.count())]
+
+    def log_console_count(self):
+        """How many messages JupyterLab's log console has collected (widget callback errors
+        end up there, not in a cell's output)."""
+        item = self.page.locator(".jp-LogConsoleStatusItem")
+        if not item.count():
+            return 0
+        text = item.first.inner_text().strip()
+        digits = "".join(ch for ch in text if ch.isdigit())
+        return int(digits) if digits else 0
+
+    def screenshot(self, name, locator=None):
+        ARTIFACTS.mkdir(parents=True, exist_ok=True)
+        path = ARTIFACTS / f"{name}.png"
+        (locator or self.page).screenshot(path=str(path))
+        return path
+
+    def close(self):
+        self.page.close()
+
+
+def expected_widget_cells(path):
+    """Indices of the code cells whose stored outputs hold a widget view."""
+    nb = json.loads((ROOT / path).read_text())
+    cells = [c for c in nb["cells"] if c["cell_type"] == "code"]
+    return [k for k, c in enumerate(cells)
+            if any("application/vnd.jupyter.widget-view+json" in o.get("data", {})
+                   for o in c.get("outputs", []))]
+
+
+WIDGET_VIEW = ".jp-OutputArea-output > .jupyter-widgets"
+
+
+def widget_view(notebook, index):
+    """The `index`-th widget output of the notebook (in page order)."""
+    view = notebook.page.locator(WIDGET_VIEW).nth(index)
+    view.scroll_into_view_if_needed()
+    time.sleep(0.5)
+    return view
+
+
+def press_slider(view, slider_index, key="ArrowRight", times=20):
+    """Move a slider of a widget with the keyboard, as a student can."""
+    slider = view.locator(".widget-slider").nth(slider_index)
+    slider.locator(".noUi-handle, .ui-slider-handle").first.click()
+    for _ in range(times):
+        slider.page.keyboard.press(key)
+    time.sleep(1.5)                                   # round trip through the kernel + redraw
+
+
+def figure_canvas(view):
+    """The ipympl canvas element of a widget (the figure's pixels)."""
+    return view.locator(".jupyter-matplotlib canvas").first
+
+
+def drag_on_canvas(canvas, start, end, steps=12):
+    """Drag with the mouse from `start` to `end`, given as fractions of the canvas (0..1, y down)."""
+    box = canvas.bounding_box()
+    page = canvas.page
+    x0, y0 = box["x"] + start[0] * box["width"], box["y"] + start[1] * box["height"]
+    x1, y1 = box["x"] + end[0] * box["width"], box["y"] + end[1] * box["height"]
+    page.mouse.move(x0, y0)
+    page.mouse.down()
+    for k in range(1, steps + 1):
+        page.mouse.move(x0 + (x1 - x0) * k / steps, y0 + (y1 - y0) * k / steps)
+        time.sleep(0.03)
+    page.mouse.up()
+    time.sleep(1.5)
+
+
+def data_to_canvas_fraction(x, y, xlim, ylim, left, right, bottom, top):
+    """Where data point (x, y) lies on a canvas, as fractions (y down), for axes placed with
+    subplots_adjust(left, right, bottom, top) and limits xlim, ylim."""
+    fx = left + (x - xlim[0]) / (xlim[1] - xlim[0]) * (right - left)
+    fy = bottom + (y - ylim[0]) / (ylim[1] - ylim[0]) * (top - bottom)
+    return fx, 1.0 - fy
