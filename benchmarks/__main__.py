@@ -9,9 +9,17 @@ from pathlib import Path
 
 import numpy as np
 
-CHAPTERS = ["benchmarks.ch03", "benchmarks.ch04", "benchmarks.ch05", "benchmarks.ch07", "benchmarks.ch12",
-            "benchmarks.ch14", "benchmarks.ch18"]
 HERE = Path(__file__).resolve().parent
+# one module per chapter, benchmarks/chNN.py, each with operations(quick) and widgets(quick)
+CHAPTERS = [f"benchmarks.{p.stem}" for p in sorted(HERE.glob("ch[0-9][0-9].py"))]
+
+
+def _number(value):
+    """Three significant digits, never in exponent form and never rounded to 0.00: a reference
+    that takes microseconds still shows (0.00312, not 0.00)."""
+    if value >= 100:
+        return f"{value:.0f}"
+    return np.format_float_positional(value, precision=3, fractional=False, trim="-")
 
 
 def _table(rows, columns):
@@ -25,10 +33,10 @@ def _table(rows, columns):
 OPERATION_COLUMNS = [
     ("operation", lambda r: r["operation"]),
     ("size", lambda r: f"{r['size']:,}"),
-    ("ours (ms)", lambda r: f"{r['ours_ms']:.2f}"),
+    ("ours (ms)", lambda r: _number(r["ours_ms"])),
     ("reference", lambda r: r["reference"]),
-    ("reference (ms)", lambda r: f"{r['reference_ms']:.2f}"),
-    ("ratio ours/ref", lambda r: f"{r['ratio']:.2f}"),
+    ("reference (ms)", lambda r: _number(r["reference_ms"])),
+    ("ratio ours/ref", lambda r: _number(r["ratio"])),
 ]
 WIDGET_COLUMNS = [
     ("widget update", lambda r: r["widget"]),

@@ -15,21 +15,24 @@ import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOK_DIRS = ("notebooks", "solutions", "exercises")
-ALGORITHM_MODULES = ("course_lib.transforms", "course_lib.quaternions", "course_lib.format",
-                     "course_lib.shapes", "course_lib._validate", "course_lib.exercises.core",
-                     "course_lib.viewing", "course_lib.clipping", "course_lib.visibility",
-                     "course_lib.curves", "course_lib.surfaces", "course_lib.shading",
-                     "course_lib.texturing", "course_lib.colormaps", "course_lib.scivis")
-DOCUMENTED_MODULES = ALGORITHM_MODULES + (
-    "course_lib.draw", "course_lib.exercises.build", "course_lib.exercises.ch03",
-    "course_lib.exercises.ch04", "course_lib.exercises.ch05", "course_lib.exercises.ch07",
-    "course_lib.widgets._base", "course_lib.widgets.quaternion", "course_lib.widgets.slerp",
-    "course_lib.widgets.gimbal", "course_lib.widgets.composer", "course_lib.widgets.camera",
-    "course_lib.widgets.cohen_sutherland", "course_lib.widgets.liang_barsky",
-    "course_lib.widgets.sutherland_hodgman", "course_lib.widgets.clipping3d",
-    "course_lib.widgets.zbuffer", "course_lib.widgets.hidden_surface",
-    "course_lib.widgets._drag", "course_lib.widgets.bezier", "course_lib.widgets.bspline",
-    "course_lib.widgets.surface")
+# Every module of course_lib is documented (found by walking the package, so a new module is
+# covered the day it is added); the algorithm layer is every top-level module except the drawing
+# layer, and must stay free of drawing libraries.
+def _all_modules():
+    import pkgutil
+
+    import course_lib
+    return sorted(info.name for info in pkgutil.walk_packages(course_lib.__path__, "course_lib.")
+                  if not info.ispkg)
+
+
+DRAWING_LAYER = {"course_lib.draw"}
+# a private module (leading underscore) is internal unless it declares a public API (__all__)
+INTERNAL_MODULES = {"course_lib.widgets._clip2d"}
+DOCUMENTED_MODULES = tuple(m for m in _all_modules() if m not in INTERNAL_MODULES)
+ALGORITHM_MODULES = tuple(m for m in DOCUMENTED_MODULES
+                          if m.count(".") == 1 and m not in DRAWING_LAYER) + (
+    "course_lib.exercises.core",)
 
 
 def all_notebooks():

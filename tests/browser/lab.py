@@ -52,6 +52,15 @@ class LabServer:
         settings.mkdir(parents=True, exist_ok=True)
         (settings / "notification.jupyterlab-settings").write_text(
             json.dumps({"fetchNews": "false", "checkForUpdates": False}))
+        # render every cell: JupyterLab 4 virtualises long notebooks (cells out of view are not
+        # laid out, so their prompts and widgets cannot be read)
+        tracker = self.tmp / "lab-settings" / "@jupyterlab" / "notebook-extension"
+        tracker.mkdir(parents=True, exist_ok=True)
+        (tracker / "tracker.jupyterlab-settings").write_text(json.dumps({"windowingMode": "none"}))
+        # never write the notebooks under test back to the repository
+        docmanager = self.tmp / "lab-settings" / "@jupyterlab" / "docmanager-extension"
+        docmanager.mkdir(parents=True, exist_ok=True)
+        (docmanager / "plugin.jupyterlab-settings").write_text(json.dumps({"autosave": False}))
         env["JUPYTERLAB_SETTINGS_DIR"] = str(self.tmp / "lab-settings")
         env["JUPYTERLAB_WORKSPACES_DIR"] = str(self.tmp / "workspaces")
         return env
@@ -115,19 +124,45 @@ class NotebookPage:
         return self
 
     def run_all(self, timeout=300_000):
-        self.page.click("text=Run", timeout=10_000)
-        self.page.click("text=Run All Cells", timeout=10_000)
-        time.sleep(2)
-        self.page.wait_for_selector(".jp-Notebook-ExecutionIndicator[data-status='idle']",
-                                    timeout=timeout)
-        # cells still queued show [*]: wait until every prompt has a number
+        """Clear the stored outputs, run every cell and wait until each code cell has run.
+
+        Clearing first matters: the stored notebook already shows execution counts, so without
+        it a kernel slow to start (a cold machine builds matplotlib's font cache) would look
+        finished before its first cell ran."""
+        self.menu("Edit", "Clear Outputs of All Cells")
+        self.page.wait_for_function(
+            "() => !document.querySelector('.jp-OutputArea-output')", timeout=30_000)
+        self.menu("Run", "Run All Cells")
+        code_cells = self.page.locator(".jp-CodeCell").count()
         deadline = time.monotonic() + timeout / 1000
         while time.monotonic() < deadline:
-            if not self.page.locator(".jp-InputPrompt:has-text('[*]')").count():
+            prompts = self.page.locator(".jp-CodeCell .jp-InputPrompt").all_text_contents()
+            done = [p for p in prompts if any(ch.isdigit() for ch in p)]
+            if len(done) == code_cells:
                 break
             time.sleep(0.5)
-        time.sleep(2)                     # widget views and first ipympl frames arrive
+        else:
+            raise TimeoutError(f"{self.path}: not every cell ran within {timeout / 1000:.0f} s")
+        self.page.wait_for_selector(".jp-Notebook-ExecutionIndicator[data-status='idle']",
+                                    timeout=timeout)
+        self.wait_for_widgets()
         return self
+
+    def menu(self, title, item):
+        """Choose `item` in the menu `title` of JupyterLab's menu bar."""
+        self.page.click(f".lm-MenuBar-itemLabel:text-is('{title}')", timeout=10_000)
+        self.page.click(f".lm-Menu-itemLabel:text-is('{item}')", timeout=10_000)
+
+    def wait_for_widgets(self, timeout=60):
+        """Wait until every widget view the stored notebook holds is rendered (views are built
+        asynchronously after their cell finishes), then a moment for the first ipympl frames."""
+        expected = len(expected_widget_cells(self.path))
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if self.page.locator(WIDGET_VIEW).count() >= expected:
+                break
+            time.sleep(0.5)
+        time.sleep(2)
 
     def error_outputs(self):
         """Texts of error and stderr outputs in the notebook."""
