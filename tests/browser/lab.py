@@ -71,7 +71,7 @@ class LabServer:
         self.process = subprocess.Popen(
             [str(jupyter), "lab", "--no-browser", "--allow-root", "--ip", "127.0.0.1",
              "--port", str(self.port), f"--IdentityProvider.token={self.token}",
-             f"--ServerApp.root_dir={ROOT}"],
+             f"--ServerApp.root_dir={ROOT}", "--LabApp.expose_app_in_browser=True"],
             env=self.environment(), stdout=log, stderr=subprocess.STDOUT)
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
@@ -117,11 +117,24 @@ class NotebookPage:
         self.page.on("pageerror", lambda e: self.console_errors.append(str(e)))
         self.server, self.path = server, path
 
-    def open(self, timeout=90_000):
+    def open(self, timeout=90):
+        """Open the notebook and wait until its kernel is started and idle.
+
+        On a cold server the kernel specs may arrive after the notebook opens; JupyterLab then
+        asks which kernel to start (a "Select Kernel" dialog): accept the proposed one."""
         self.page.goto(f"{self.server.url}/lab/tree/{self.path}?token={self.server.token}&reset")
-        self.page.wait_for_selector(".jp-Notebook-ExecutionIndicator[data-status='idle']",
-                                    timeout=timeout)
-        return self
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            dialog = self.page.locator(".jp-Dialog:has-text('Select Kernel') .jp-mod-accept")
+            if dialog.count():
+                dialog.first.click()
+            name = self.page.locator(".jp-KernelName").all_text_contents()
+            idle = self.page.locator(".jp-Notebook-ExecutionIndicator[data-status='idle']")
+            if idle.count() and name and "No Kernel" not in name[0] and name[0].strip():
+                return self
+            time.sleep(0.5)
+        raise TimeoutError(f"{self.path}: no idle kernel after {timeout} s "
+                           f"(kernel name shown: {name})")
 
     def run_all(self, timeout=300_000):
         """Clear the stored outputs, run every cell and wait until each code cell has run.
@@ -135,11 +148,20 @@ class NotebookPage:
         self.menu("Run", "Run All Cells")
         code_cells = self.page.locator(".jp-CodeCell").count()
         deadline = time.monotonic() + timeout / 1000
+        stalled = 0
         while time.monotonic() < deadline:
             prompts = self.page.locator(".jp-CodeCell .jp-InputPrompt").all_text_contents()
             done = [p for p in prompts if any(ch.isdigit() for ch in p)]
             if len(done) == code_cells:
                 break
+            # an error stops "Run All": nothing queued, kernel idle, yet cells not run
+            queued = any("*" in p for p in prompts)
+            idle = self.page.locator(
+                ".jp-Notebook-ExecutionIndicator[data-status='idle']").count() > 0
+            stalled = stalled + 1 if done and not queued and idle else 0
+            if stalled >= 10:
+                raise RuntimeError(f"{self.path}: Run All stopped after {len(done)} of "
+                                   f"{code_cells} cells: {self.error_outputs()[:2]}")
             time.sleep(0.5)
         else:
             raise TimeoutError(f"{self.path}: not every cell ran within {timeout / 1000:.0f} s")
