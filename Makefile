@@ -16,11 +16,17 @@ PYTEST_ARGS ?=
 # JupyterLab refuses to run as root unless told (containers, some lab machines)
 LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
-.PHONY: lab test system-packages exercises notebooks benchmarks clean
+.PHONY: lab lecture test system-packages exercises notebooks benchmarks clean
 
 lab: $(STAMP)
 	@scripts/system-packages --warn-only --no-browser
 	$(BIN)/jupyter lab --ServerApp.root_dir=. --LabApp.default_url=/lab/tree/notebooks $(LAB_ARGS)
+
+# lecture mode: figures drawn 1.5 times larger for a projector (SCALE=1.8 for more); present a
+# lesson as slides with the deck button of the notebook toolbar (see the README)
+lecture: $(STAMP)
+	@scripts/system-packages --warn-only --no-browser
+	COURSE_LECTURE=$(or $(SCALE),1) $(BIN)/jupyter lab --ServerApp.root_dir=. --LabApp.default_url=/lab/tree/notebooks $(LAB_ARGS)
 
 test: $(STAMP)
 	@scripts/system-packages

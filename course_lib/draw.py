@@ -17,10 +17,12 @@ __all__ = [
     "face_normals",
     "figure",
     "frame_3d",
+    "lecture_scale",
     "mesh_3d",
     "set_frame_3d",
     "set_mesh_3d",
     "setup_axes_2d",
+    "set_lecture_scale",
     "setup_axes_3d",
     "shade",
     "show",
@@ -46,6 +48,66 @@ def configure_offscreen_vtk():
         os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
 
 
+#: the environment variable of lecture mode (``make lecture`` sets it): "1" for the default
+#: projector scale, or a number such as "1.8"
+LECTURE_ENV = "COURSE_LECTURE"
+DEFAULT_LECTURE_SCALE = 1.5
+_lecture_scale = None
+
+
+def lecture_scale():
+    """How much larger than on a laptop figures are drawn: 1 normally, about 1.5 in lecture mode.
+
+    Lecture mode scales every figure the widgets and lessons make (text, lines and markers
+    together, through the figure's dpi), so that a slider explorer reads from the back of a lecture
+    room. It is on when the environment variable ``COURSE_LECTURE`` is set (``make lecture`` does
+    that) or after :func:`set_lecture_scale`.
+
+    Examples
+    --------
+    >>> set_lecture_scale(1.6); lecture_scale()
+    1.6
+    >>> set_lecture_scale(None)      # back to the environment's choice
+    """
+    if _lecture_scale is not None:
+        return _lecture_scale
+    value = os.environ.get(LECTURE_ENV, "").strip()
+    if not value or value == "0":
+        return 1.0
+    try:
+        scale = float(value)
+    except ValueError:
+        raise ValueError(f"environment variable {LECTURE_ENV} must be 1 or a scale such as 1.8, "
+                         f"got {value!r}") from None
+    return DEFAULT_LECTURE_SCALE if scale == 1 else scale
+
+
+def set_lecture_scale(scale=DEFAULT_LECTURE_SCALE):
+    """Draw the figures made from now on `scale` times larger (None: follow ``COURSE_LECTURE``).
+
+    Parameters
+    ----------
+    scale : float or None
+        Between 0.5 and 3; 1 is the laptop size.
+
+    Examples
+    --------
+    >>> set_lecture_scale(2.0); figure(figsize=(2, 2)).dpi
+    180.0
+    >>> set_lecture_scale(None)
+    >>> set_lecture_scale(7)
+    Traceback (most recent call last):
+    ...
+    ValueError: scale must be between 0.5 and 3 (1 is the laptop size), got 7
+    """
+    global _lecture_scale
+    if scale is not None:
+        if not isinstance(scale, (int, float)) or not 0.5 <= scale <= 3:
+            raise ValueError(f"scale must be between 0.5 and 3 (1 is the laptop size), got {scale!r}")
+        scale = float(scale)
+    _lecture_scale = scale
+
+
 def figure(figsize=(4.5, 4.5), dpi=90, **kwargs):
     """A new matplotlib figure that is not displayed by itself.
 
@@ -58,6 +120,7 @@ def figure(figsize=(4.5, 4.5), dpi=90, **kwargs):
     figsize : (float, float)
         Size in inches; keep widget figures small, every pixel costs redraw time.
     dpi : float
+        Multiplied by :func:`lecture_scale` (1 except in lecture mode).
     **kwargs
         Passed to ``matplotlib.pyplot.figure``.
 
@@ -74,7 +137,7 @@ def figure(figsize=(4.5, 4.5), dpi=90, **kwargs):
     import matplotlib.pyplot as plt
 
     with plt.ioff():
-        fig = plt.figure(figsize=figsize, dpi=dpi, **kwargs)
+        fig = plt.figure(figsize=figsize, dpi=dpi * lecture_scale(), **kwargs)
     canvas = fig.canvas
     for name, value in (("header_visible", False), ("footer_visible", False),
                         ("toolbar_position", "left"), ("resizable", False)):

@@ -10,6 +10,7 @@ import sys
 import tomllib
 from pathlib import Path
 
+import nbformat
 import pytest
 import yaml
 
@@ -54,8 +55,15 @@ def test_environment_yml_lists_the_same_packages_as_pyproject():
                              else d) for d in conda)
     python = have.pop("python", None)
     have.pop("pip", None)
+    # packages that conda-forge does not carry (or carries under another name) go in the
+    # `pip:` subsection, spelled as on PyPI; together the two lists must equal pyproject's
     pip_section = [d for d in env["dependencies"] if isinstance(d, dict)]
-    assert not pip_section, "environment.yml: keep every package in the conda list"
+    assert all(set(d) == {"pip"} for d in pip_section), "environment.yml: only a pip: subsection"
+    for d in pip_section:
+        for item in d["pip"]:
+            name, spec = _requirement(item)
+            assert name not in have, f"environment.yml lists {name} twice (conda and pip)"
+            have[name] = spec
     assert have == wanted, (
         "environment.yml and pyproject.toml disagree:\n"
         f"  only in environment.yml: {sorted(set(have.items()) - set(wanted.items()))}\n"
@@ -145,3 +153,15 @@ def test_solution_code_regions_parse():
                 source = "\n".join(line for line in cell.source.splitlines()
                                    if not line.lstrip().startswith(("%", "!")))
                 ast.parse(source)
+
+
+@pytest.mark.parametrize("path", all_notebooks(), ids=lambda p: str(p.relative_to(ROOT)))
+def test_notebook_carries_the_slide_metadata_of_lecture_mode(path):
+    from course_lib.exercises.build import slide_types
+
+    nb = nbformat.read(path, as_version=4)
+    have = [c.metadata.get("slideshow", {}).get("slide_type", "-") for c in nb.cells]
+    assert have == slide_types(nb), (
+        f"{path.name}: slide metadata missing or stale; run "
+        "`python -m course_lib.exercises.build --slides`")
+    assert have[0] == "slide" and have.count("slide") >= 2 if len(have) > 3 else True

@@ -29,7 +29,8 @@ from pathlib import Path
 
 import nbformat
 
-__all__ = ["build_exercise_notebook", "stale_exercises", "strip_code", "strip_markdown"]
+__all__ = ["build_exercise_notebook", "slide_types", "stale_exercises", "strip_code", "strip_markdown",
+           "with_slides"]
 
 ROOT = Path(__file__).resolve().parents[2]
 CODE_BEGIN, CODE_END = "### BEGIN SOLUTION", "### END SOLUTION"
@@ -202,6 +203,74 @@ def build_exercise_notebook(solution_nb, source_name):
     return nb
 
 
+WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+
+
+def slide_types(nb):
+    """The slide type of every cell when the notebook is presented (lecture mode).
+
+    A chapter title or a ``##`` section starts a slide, a ``###`` subsection a sub-slide (reached
+    with the down arrow), and every cell that shows an explorer starts a sub-slide of its own so
+    that the widget fills the projector; all other cells continue the current slide.
+
+    Parameters
+    ----------
+    nb : nbformat.NotebookNode
+
+    Returns
+    -------
+    list of str
+        ``"slide"``, ``"subslide"`` or ``"-"``, one per cell.
+
+    Examples
+    --------
+    >>> from nbformat.v4 import new_notebook, new_markdown_cell, new_code_cell
+    >>> nb = new_notebook(cells=[new_markdown_cell("# Chapter"), new_code_cell("x = 1"),
+    ...                          new_markdown_cell("## 1. Section"), new_markdown_cell("text"),
+    ...                          new_markdown_cell("### 1.1 Part")])
+    >>> slide_types(nb)
+    ['slide', '-', 'slide', '-', 'subslide']
+    """
+    types = []
+    for k, cell in enumerate(nb.cells):
+        first = cell.source.lstrip().split("\n", 1)[0] if cell.source.strip() else ""
+        if k == 0 or (cell.cell_type == "markdown" and re.match(r"#{1,2} ", first)):
+            kind = "slide"
+        elif cell.cell_type == "markdown" and first.startswith("### "):
+            kind = "subslide"
+        elif cell.cell_type == "code" and types and types[-1] not in ("slide", "subslide") and any(
+                WIDGET_VIEW in o.get("data", {}) for o in cell.get("outputs", [])):
+            kind = "subslide"
+        else:
+            kind = "-"
+        types.append(kind)
+    return types
+
+
+def with_slides(nb):
+    """`nb` with its slide metadata set from :func:`slide_types` (in place, and returned).
+
+    The cells that start a slide or sub-slide carry ``metadata.slideshow.slide_type``, read by
+    jupyterlab-deck (live slides inside JupyterLab, widgets working), RISE and
+    ``jupyter nbconvert --to slides``; the other cells carry none (they continue the slide).
+
+    Examples
+    --------
+    >>> from nbformat.v4 import new_notebook, new_markdown_cell
+    >>> nb = with_slides(new_notebook(cells=[new_markdown_cell("# Title")]))
+    >>> nb.cells[0].metadata["slideshow"]
+    {'slide_type': 'slide'}
+    """
+    for cell, kind in zip(nb.cells, slide_types(nb)):
+        if kind == "-":
+            # a continuation carries no metadata: jupyterlab-deck reads "-" as an unknown type
+            # (and hides the cell), while RISE and nbconvert treat a missing type as "-"
+            cell.metadata.pop("slideshow", None)
+        else:
+            cell.metadata["slideshow"] = {"slide_type": kind}
+    return nb
+
+
 def execute(nb, cwd, timeout=600):
     """Execute `nb` in a fresh kernel in directory `cwd` and return it with its outputs.
 
@@ -214,7 +283,7 @@ def execute(nb, cwd, timeout=600):
                             record_timing=False, store_widget_state=False)
     client.execute()
     nb.metadata.pop("widgets", None)
-    return nb
+    return with_slides(nb)
 
 
 def solution_notebooks(root=ROOT):
@@ -299,6 +368,8 @@ def main(argv=None):
                         help="only report whether exercises/ is stale (exit status 1 if so)")
     parser.add_argument("--execute", action="store_true",
                         help="also re-execute notebooks/ and solutions/ in place")
+    parser.add_argument("--slides", action="store_true",
+                        help="only (re)write the slide metadata of every notebook")
     parser.add_argument("notebooks", nargs="*",
                         help="with --execute: only these notebooks (default: all)")
     args = parser.parse_args(argv)
@@ -307,6 +378,11 @@ def main(argv=None):
         for line in problems:
             print(line)
         return 1 if problems else 0
+    if args.slides:
+        for folder in ("notebooks", "solutions", "exercises"):
+            for path in sorted((ROOT / folder).glob("*.ipynb")):
+                nbformat.write(with_slides(nbformat.read(path, as_version=4)), path)
+        return 0
     named = [Path(p).resolve() for p in args.notebooks]
     if args.execute:
         paths = named or sorted((ROOT / "notebooks").glob("*.ipynb")) + solution_notebooks()
