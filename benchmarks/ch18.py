@@ -91,5 +91,42 @@ def operations(quick=False):
 
 
 def widgets(quick=False):
-    """Chapter 18's widget rows are added by the widgets' author."""
-    return []
+    """Median update of each chapter-18 explorer as a student moves its main control: the
+    isovalue slider (marching squares on a 12 x 12 field with cases, saddles and the fine
+    reference isoline; marching cubes on a 32^3 volume rendered by pyvista off screen) and
+    the step slider of the streamline explorer (3 seeds, RK4, steps 0.04 to 0.5 over 2 pi)."""
+    import matplotlib
+
+    matplotlib.use("module://ipympl.backend_nbagg")
+    import matplotlib.pyplot as plt
+
+    from benchmarks import widget_row
+    from course_lib.widgets import isovalue, streamlines
+
+    repeat = 5 if quick else 40
+    rows = []
+    explorer = isovalue.IsolineExplorer()
+    explorer.fig.canvas.draw()
+    lo, hi = explorer.level.min, explorer.level.max
+    rows.append(widget_row(
+        "isoline explorer (isovalue slider, 12x12 field)",
+        lambda i: setattr(explorer.level, "value", lo + (hi - lo) * (0.1 + 0.02 * (i % 40))),
+        explorer.fig.canvas.draw, repeat))
+    plt.close(explorer.fig)
+
+    explorer = isovalue.IsosurfaceExplorer()
+    rows.append(widget_row(
+        "isosurface explorer (isovalue slider, 32^3 blobs, pyvista off screen)",
+        lambda i: setattr(explorer.level, "value", 0.25 + 0.01 * (i % 40)),
+        lambda: explorer.png(), repeat))
+    explorer.plotter.close()
+
+    explorer = streamlines.StreamlineExplorer()
+    explorer.method.value = "rk4"
+    explorer.fig.canvas.draw()
+    rows.append(widget_row(
+        "streamline explorer (step slider, RK4, 3 seeds)",
+        lambda i: setattr(explorer.step, "value", 0.04 + 0.46 * ((i % 20) / 19)),
+        explorer.fig.canvas.draw, repeat))
+    plt.close(explorer.fig)
+    return rows

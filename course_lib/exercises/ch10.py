@@ -1,0 +1,891 @@
+r"""Chapter 10 exercises: normalisation, transfer functions and colour maps, exam style.
+
+Each class is one kind of exam question: normalise values from one range onto another and undo
+it; evaluate a piecewise-linear transfer function and a step (thresholding) function; design an
+opacity transfer function for a band of values; look a value up in a colour map; compute the
+perceived lightness :math:`L^*` of a colour; tell from their lightness curves which colour maps
+can show an ordered quantity; and choose the kind of colour map (sequential, diverging,
+qualitative) that a kind of data needs. The ``seed`` draws numbers that work out by hand: whole
+data ranges, parameters that fall on quarters of a colour-map interval, colour components in
+steps of 0.2.
+
+The expected answers come from :mod:`course_lib.colormaps`. Each exercise names the slips it
+anticipates (the offset :math:`c` of the target range forgotten, a division by :math:`b`
+instead of :math:`b - a`, a step function read where a linear one was meant, :math:`n` instead
+of :math:`n - 1` intervals in a colour map, lightness computed from gamma-encoded values, ...),
+computes the answer each slip would give, and draws its numbers again until those answers differ
+clearly from the right one and from each other
+(:class:`~course_lib.exercises.core.DrawnExercise`).
+
+Conventions (those of :mod:`course_lib.colormaps`): colours are sRGB triples in [0, 1]; a colour
+map of :math:`n` control colours places them at :math:`t_k = k / (n - 1)` and interpolates
+linearly in RGB; a transfer function keeps its end values outside its control points; a step
+function takes the value :math:`v_i` on :math:`[s_i, s_{i+1})`.
+"""
+import numpy as np
+
+from .. import colormaps as cm
+from .. import format as fmt
+from .core import (ATOL, DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, data_note,
+                   is_unanswered, pick, read_floats)
+
+__all__ = [
+    "EXERCISES",
+    "MAP_KINDS",
+    "SCENARIOS",
+    "ChooseMapKind",
+    "ColormapLookup",
+    "Denormalize",
+    "DesignOpacity",
+    "LightnessOfColour",
+    "MonotonicMaps",
+    "NormalizeValues",
+    "ThresholdBands",
+    "TransferValues",
+]
+
+_num = fmt.number
+_vec = fmt.vector_latex
+
+#: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
+_GENERIC = {"components differ", "wrong length", "opposite sign", "value differs"}
+
+
+def _hinted(feedback, hint):
+    """`feedback` with `hint` appended when no anticipated mistake explained the answer."""
+    if hint and feedback.status == "wrong" and feedback.diagnosis in _GENERIC:
+        return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
+    return feedback
+
+
+def _placeholder(answer):
+    """True for `...`, None, and a list or tuple with a `...` in it."""
+    return is_unanswered(answer) or (isinstance(answer, (list, tuple))
+                                     and any(a is Ellipsis for a in answer))
+
+
+def _values_words(values):
+    return ", ".join(f"${_num(v)}$" for v in values)
+
+
+class _Chapter10(DrawnExercise):
+    """The chapter's base: an answer no anticipated slip explains gets ``hint``.
+
+    Core's vector diagnosis reads a wrong answer of the right direction as "right direction,
+    wrong length": that means nothing for a list of values, so it becomes the list of the
+    components that are off.
+    """
+
+    hint = ""
+
+    def _check(self, answer):
+        if isinstance(answer, (bool, np.bool_)):
+            return Feedback("invalid", "Your answer is True or False; give a number.",
+                            "not a number")
+        feedback = super()._check(answer)
+        if feedback.diagnosis == "wrong length":
+            value = np.ravel(read_floats(answer))
+            off = [int(i) for i in np.flatnonzero(~np.isclose(value, np.ravel(self.expected),
+                                                                rtol=1e-3, atol=ATOL))]
+            feedback = Feedback("wrong", f"Components {off} (counted from 0) of {self.what} "
+                                "are off.", "components differ")
+        return _hinted(feedback, self.hint)
+
+
+# ---------------------------------------------------------------------------------------------
+# Normalisation
+# ---------------------------------------------------------------------------------------------
+
+_IN_RANGES = ((0, 200), (20, 60), (-10, 30), (100, 300), (-40, 40), (10, 90), (50, 250))
+_OUT_RANGES = ((0, 255), (0, 1), (-1, 1), (0, 100), (10, 20), (1, 5), (-50, 50))
+
+_FORMULA = r"$n(v) = \dfrac{v - a}{b - a}\,(d - c) + c$"
+
+
+class NormalizeValues(_Chapter10):
+    r"""Normalise a few data values from the range [a, b] onto the range [c, d].
+
+    .. math:: n(v) = \frac{v - a}{b - a}\,(d - c) + c
+
+    Attributes: ``values``, ``in_range`` (a, b), ``out_range`` (c, d).
+
+    Examples
+    --------
+    >>> ex = NormalizeValues(seed=1)
+    >>> (a, b), (c, d) = ex.in_range, ex.out_range
+    >>> ex.check((ex.values - a) / (b - a) * (d - c) + c).status
+    'correct'
+    >>> ex.check(cm.normalize(ex.values, out_range=ex.out_range)).diagnosis
+    'data range'
+    >>> ex.check(...).status, ex.check("0.5").status
+    ('unanswered', 'invalid')
+    """
+
+    title = "Normalise data to a new range"
+    answer_form = "vector"
+    what = "the list of normalised values"
+    may_coincide = ("no offset", "unit interval", "no shift")
+    hint = (r"Go step by step for each value: subtract $a$, divide by $b - a$ (now it is in "
+            r"$[0, 1]$), multiply by $d - c$, add $c$.")
+
+    def draw(self, rng):
+        a, b = pick(rng, _IN_RANGES)
+        c, d = pick(rng, _OUT_RANGES)
+        self.in_range, self.out_range = (float(a), float(b)), (float(c), float(d))
+        k = rng.choice(np.arange(1, 8), size=4, replace=False)
+        self.values = np.sort(a + (b - a) * k / 8.0)
+        self.expected = cm.normalize(self.values, self.in_range, self.out_range)
+
+    def mistakes(self):
+        (a, b), (c, d), v = self.in_range, self.out_range, self.values
+        t = (v - a) / (b - a)
+        return [
+            Mistake(t * (d - c), r"You forgot to add $c$ at the end: your values run from 0 to "
+                    r"$d - c$ instead of from $c$ to $d$. After stretching by $d - c$, shift by "
+                    r"$c$.", "no offset"),
+            Mistake(t, r"You stopped at $[0, 1]$: $\frac{v - a}{b - a}$ is only the first half "
+                    r"of the job. Stretch it by $d - c$ and add $c$ to land on $[c, d]$.",
+                    "unit interval"),
+            Mistake((v - a) / b * (d - c) + c, r"You divided by $b$ instead of by the width of "
+                    r"the data range, $b - a$: then $v = b$ does not map to $d$.", "divided by b"),
+            Mistake(v / (b - a) * (d - c) + c, r"You forgot to subtract $a$ first: the smallest "
+                    r"value $a$ must map to $c$, so the formula starts with $v - a$.",
+                    "no shift"),
+            Mistake(cm.normalize(v, None, self.out_range), r"You took the range from the four "
+                    r"values themselves (their minimum and maximum). The question gives the data "
+                    r"range $[a, b]$: use it, so that values from different data sets with the "
+                    r"same range are comparable.", "data range"),
+            Mistake((v - c) / (d - c) * (b - a) + a, r"You swapped the two ranges: you mapped "
+                    r"$[c, d]$ onto $[a, b]$. The data live in $[a, b]$; subtract $a$ and divide "
+                    r"by $b - a$.", "ranges swapped"),
+        ]
+
+    def statement(self):
+        (a, b), (c, d) = self.in_range, self.out_range
+        return (
+            rf"A sensor measures values in the range $[a, b] = [{_num(a)}, {_num(b)}]$. For "
+            rf"display they are mapped linearly onto $[c, d] = [{_num(c)}, {_num(d)}]$ with "
+            + _FORMULA + r". Normalise the measured values "
+            + _values_words(self.values) + ".\n\n"
+            r"**Answer:** a list of the 4 normalised values, in the order given. " + DECIMALS
+            + "\n\n" + data_note("values", "in_range", "out_range"))
+
+
+class Denormalize(_Chapter10):
+    r"""Undo a normalisation: the data value behind a displayed (normalised) value.
+
+    Solve :math:`g = \frac{v - a}{b - a}(d - c) + c` for :math:`v`:
+    :math:`v = a + \frac{g - c}{d - c}(b - a)`.
+
+    Attributes: ``g`` (the displayed value), ``in_range`` (a, b), ``out_range`` (c, d).
+
+    Examples
+    --------
+    >>> ex = Denormalize(seed=2)
+    >>> (a, b), (c, d) = ex.in_range, ex.out_range
+    >>> ex.check(a + (ex.g - c) / (d - c) * (b - a)).status
+    'correct'
+    >>> ex.check((ex.g - a) / (b - a) * (d - c) + c).diagnosis
+    'forward formula'
+    """
+
+    title = "From a displayed value back to the data"
+    answer_form = "number"
+    what = "the data value"
+    may_coincide = ("ignored c",)
+    hint = (r"Undo the steps of the normalisation in reverse order: subtract $c$, divide by "
+            r"$d - c$, multiply by $b - a$, add $a$.")
+
+    def draw(self, rng):
+        a, b = pick(rng, _IN_RANGES)
+        c, d = pick(rng, _OUT_RANGES)
+        self.in_range, self.out_range = (float(a), float(b)), (float(c), float(d))
+        t = float(pick(rng, (0.2, 0.4, 0.6, 0.8) if d == 255 else (0.125, 0.25, 0.375, 0.625,
+                                                                   0.75, 0.875)))
+        self.g = c + t * (d - c)
+        self.expected = a + t * (b - a)
+
+    def mistakes(self):
+        (a, b), (c, d), g = self.in_range, self.out_range, self.g
+        found = [
+            Mistake((g - a) / (b - a) * (d - c) + c, r"You applied the normalisation formula "
+                    r"again instead of inverting it. The displayed value $g$ lives in $[c, d]$; "
+                    r"solve $g = \frac{v - a}{b - a}(d - c) + c$ for $v$.", "forward formula"),
+            Mistake((g - c) / (d - c) * (b - a), r"You forgot to add $a$ back: the fraction "
+                    r"$\frac{g - c}{d - c}$ times $b - a$ is the distance above $a$, not the "
+                    r"value itself.", "no shift back"),
+            Mistake(g / (d - c) * (b - a) + a, r"You forgot to subtract $c$ first: the "
+                    r"display range starts at $c$, so $g - c$ is how far up it the value is.",
+                    "ignored c"),
+        ]
+        if d == 255:
+            found.append(Mistake(g / 256 * (b - a) + a, r"You divided by 256, the number of "
+                                 r"grey levels. The levels run from 0 to 255, so the range has "
+                                 r"width $d - c = 255$.", "256 levels"))
+        return found
+
+    def statement(self):
+        (a, b), (c, d) = self.in_range, self.out_range
+        return (
+            rf"Data in the range $[a, b] = [{_num(a)}, {_num(b)}]$ were mapped onto "
+            rf"$[c, d] = [{_num(c)}, {_num(d)}]$ by " + _FORMULA + r". A pixel shows the "
+            rf"value $g = {_num(self.g)}$. Which data value $v$ does it stand for?" "\n\n"
+            r"**Answer:** one number. " + DECIMALS + "\n\n"
+            + data_note("g", "in_range", "out_range"))
+
+
+# ---------------------------------------------------------------------------------------------
+# Transfer functions
+# ---------------------------------------------------------------------------------------------
+
+_LEVELS = (0.0, 0.2, 0.4, 0.5, 0.6, 0.8, 1.0)
+
+
+def _nearest_values(points, values, samples):
+    idx = np.abs(np.asarray(samples)[:, None] - np.asarray(points)[None, :]).argmin(axis=1)
+    return np.asarray(values)[idx]
+
+
+def _extrapolated(points, values, samples):
+    s = np.asarray(samples, dtype=float)
+    out = np.interp(s, points, values)
+    lo, hi = s < points[0], s > points[-1]
+    slope0 = (values[1] - values[0]) / (points[1] - points[0])
+    slope1 = (values[-1] - values[-2]) / (points[-1] - points[-2])
+    out[lo] = values[0] + (s[lo] - points[0]) * slope0
+    out[hi] = values[-1] + (s[hi] - points[-1]) * slope1
+    return out
+
+
+def _table(points, values, name="s", value_name="f(s)"):
+    return (f"| ${name}$ | " + " | ".join(f"${_num(p)}$" for p in points) + " |\n"
+            + "|---" * (len(points) + 1) + "|\n"
+            + f"| ${value_name}$ | " + " | ".join(f"${_num(v)}$" for v in values) + " |")
+
+
+class TransferValues(_Chapter10):
+    r"""Evaluate a piecewise-linear intensity transfer function at a few scalars.
+
+    Between control points :math:`s_i < s_{i+1}` the value is interpolated linearly; outside the
+    first and last control points it stays at the end value.
+
+    Attributes: ``points``, ``values`` (the control points and their intensities), ``samples``.
+
+    Examples
+    --------
+    >>> ex = TransferValues(seed=0)
+    >>> ex.check(np.interp(ex.samples, ex.points, ex.values)).status
+    'correct'
+    >>> ex.check(cm.TransferFunction(ex.points, ex.values, "step")(ex.samples)).diagnosis
+    'step'
+    """
+
+    title = "Evaluate a transfer function"
+    answer_form = "vector"
+    what = "the list of intensities"
+    hint = (r"For each scalar find the two control points around it, "
+            r"$s_i \le s \le s_{i+1}$, and interpolate: "
+            r"$f(s) = f_i + \frac{s - s_i}{s_{i+1} - s_i}(f_{i+1} - f_i)$. Outside the control "
+            r"points the end value holds.")
+
+    def draw(self, rng):
+        n = int(pick(rng, (3, 4)))
+        self.points = np.sort(rng.choice(np.arange(1, 10), size=n, replace=False)) * 10.0
+        while True:
+            self.values = np.array([pick(rng, _LEVELS) for _ in range(n)])
+            if np.all(np.diff(self.values) != 0):
+                break
+        inner = [s for s in np.arange(self.points[0] + 5, self.points[-1], 5.0)
+                 if s not in self.points]
+        outer = [s for s in (0.0, 5.0, 95.0, 100.0) if s < self.points[0] or s > self.points[-1]]
+        chosen = list(rng.choice(inner, size=min(3, len(inner)), replace=False))
+        self.samples = np.array(sorted(chosen + [float(pick(rng, outer))]))
+        self.expected = cm.TransferFunction(self.points, self.values)(self.samples)
+
+    def acceptable(self):
+        return len(self.samples) == 4
+
+    def mistakes(self):
+        p, v, s = self.points, self.values, self.samples
+        return [
+            Mistake(cm.TransferFunction(p, v, "step")(s), r"You used the value of the control "
+                    r"point below each scalar, as if the function were a step function. Between "
+                    r"control points it changes linearly: interpolate.", "step"),
+            Mistake(_nearest_values(p, v, s), r"You took the value of the nearest control "
+                    r"point. The function is linear between control points: interpolate "
+                    r"between the two around each scalar.", "nearest"),
+            Mistake(_extrapolated(p, v, s), r"Outside the control points you continued the "
+                    r"first or last segment. A transfer function keeps its end value there "
+                    r"(it is clamped).", "extrapolated"),
+            Mistake(np.interp(s, [p[0], p[-1]], [v[0], v[-1]]), r"You interpolated between "
+                    r"the first and the last control point only. Every control point counts: "
+                    r"find the segment $[s_i, s_{i+1}]$ that holds the scalar.", "ends only"),
+        ]
+
+    def statement(self):
+        return (
+            r"An intensity transfer function $f$ is given by its control points (linear in "
+            r"between, constant outside):" "\n\n" + _table(self.points, self.values) + "\n\n"
+            r"What intensity does it give to the scalars " + _values_words(self.samples) + "?"
+            "\n\n" r"**Answer:** a list of the 4 intensities, in the order given. " + DECIMALS
+            + "\n\n" + data_note("points", "values", "samples"))
+
+
+class ThresholdBands(_Chapter10):
+    r"""Evaluate a step transfer function (a thresholding of the data into bands).
+
+    The value is :math:`v_i` on :math:`[s_i, s_{i+1})`, :math:`v_0` below :math:`s_0` and the last
+    value from the last threshold on: a scalar exactly at a threshold belongs to the band above.
+
+    Attributes: ``points`` (thresholds), ``values``, ``samples``.
+
+    Examples
+    --------
+    >>> ex = ThresholdBands(seed=0)
+    >>> ex.check(cm.TransferFunction(ex.points, ex.values, "step")(ex.samples)).status
+    'correct'
+    >>> ex.check(cm.TransferFunction(ex.points, ex.values)(ex.samples)).diagnosis
+    'interpolated'
+    """
+
+    title = "Thresholding with a step function"
+    answer_form = "vector"
+    what = "the list of values"
+    hint = (r"For each scalar find the band $s_i \le s < s_{i+1}$ it falls in and take that "
+            r"band's value $v_i$; no interpolation.")
+
+    def draw(self, rng):
+        n = 4
+        self.points = np.sort(rng.choice(np.arange(1, 10), size=n, replace=False)) * 100.0
+        while True:
+            self.values = np.array([pick(rng, _LEVELS) for _ in range(n)])
+            if np.all(np.diff(self.values) != 0):
+                break
+        at = float(pick(rng, self.points[1:]))
+        others = [s for s in np.arange(50.0, 1000.0, 50.0) if s not in self.points]
+        chosen = list(rng.choice(others, size=4, replace=False))
+        self.samples = np.array(sorted(chosen + [at]))
+        self.expected = cm.TransferFunction(self.points, self.values, "step")(self.samples)
+
+    def mistakes(self):
+        p, v, s = self.points, self.values, self.samples
+        band = np.clip(np.searchsorted(p, s, side="left") - 1, 0, len(p) - 1)   # (s_i, s_{i+1}]
+        upper = np.clip(np.searchsorted(p, s, side="right"), 0, len(p) - 1)
+        return [
+            Mistake(v[band], r"A scalar exactly at a threshold belongs to the band **above** "
+                    r"it: the step function takes $v_i$ on $[s_i, s_{i+1})$, closed at the "
+                    r"lower end.", "boundary below"),
+            Mistake(v[upper], r"You took the value of the next band up. The value $v_i$ holds "
+                    r"from the threshold $s_i$ up to (not including) $s_{i+1}$.", "next band"),
+            Mistake(cm.TransferFunction(p, v)(s), r"You interpolated between the thresholds. "
+                    r"A step function is constant on each band and jumps at the thresholds.",
+                    "interpolated"),
+        ]
+
+    def statement(self):
+        return (
+            r"A step transfer function classifies the data into bands: $f(s) = v_i$ for "
+            r"$s_i \le s < s_{i+1}$, $f(s) = v_0$ below $s_0$ and $f(s) = v_3$ from $s_3$ on."
+            "\n\n" + _table(self.points, self.values, "s_i", "v_i") + "\n\n"
+            r"What does it give for the scalars " + _values_words(self.samples) + "?\n\n"
+            r"**Answer:** a list of the 5 values, in the order given. " + DECIMALS + "\n\n"
+            + data_note("points", "values", "samples"))
+
+
+def _read_control_points(answer):
+    """A TransferFunction from a student's control points, or a Feedback."""
+    if isinstance(answer, cm.TransferFunction):
+        if answer.channels != 1:
+            return Feedback("invalid", "Your transfer function has several channels; give an "
+                            "opacity function (one number per control point).", "unreadable")
+        return answer
+    if _placeholder(answer):
+        return Feedback("unanswered", UNANSWERED)
+    form = ("Give the control points as a list of `(scalar, opacity)` pairs, e.g. "
+            "`[(10, 0), (20, 0.5), ...]`, or as a `TransferFunction`.")
+    value = read_floats(answer)
+    if value is None or value.ndim != 2:
+        return Feedback("invalid", form, "unreadable")
+    if value.shape[0] == 2 and value.shape[1] > 2:
+        value = value.T                              # [points, values] given as two rows
+    if value.shape[1] != 2 or len(value) < 2:
+        return Feedback("invalid", form, "unreadable")
+    value = value[np.argsort(value[:, 0], kind="stable")]
+    if ((value[:, 1] < 0) | (value[:, 1] > 1)).any():
+        return Feedback("invalid", "An opacity must lie in [0, 1] (0 transparent, 1 opaque).",
+                        "opacity out of range")
+    try:
+        return cm.TransferFunction(value[:, 0], value[:, 1])
+    except ValueError as exc:
+        return Feedback("invalid", f"These control points do not define a function: {exc}.",
+                        "unreadable")
+
+
+class DesignOpacity(_Chapter10):
+    r"""Design an opacity transfer function that shows one band of values (a tissue).
+
+    Values in :math:`[l, h]` get opacity :math:`\alpha`, values outside :math:`[l - w, h + w]`
+    are transparent, with linear ramps in between: the control points
+    :math:`(l - w, 0), (l, \alpha), (h, \alpha), (h + w, 0)`. Any control points that define the
+    same function are right (extra points on the lines, the range ends added, a
+    ``TransferFunction`` object); the function is compared on a fine grid over the data range.
+
+    Attributes: ``data_range``, ``low``, ``high``, ``width``, ``alpha``; ``grid`` (the scalars
+    the function is compared at).
+
+    Examples
+    --------
+    >>> ex = DesignOpacity(seed=0)
+    >>> l, h, w, a = ex.low, ex.high, ex.width, ex.alpha
+    >>> ex.check([(l - w, 0), (l, a), (h, a), (h + w, 0)]).status
+    'correct'
+    >>> ex.check(cm.opacity_transfer([l - w, l, h, h + w], [0, a, a, 0])).status
+    'correct'
+    >>> ex.check([(l, 0), (l, a), (h, a), (h, 0)]).diagnosis
+    'no ramps'
+    >>> ex.check([(0, 0.5), (1, 2)]).status
+    'invalid'
+    """
+
+    title = "Design an opacity transfer function"
+    answer_form = "custom"
+    what = "your transfer function"
+
+    def draw(self, rng):
+        scale = float(pick(rng, (1, 10)))
+        self.data_range = (0.0, 100.0 * scale)
+        self.width = float(pick(rng, (5, 10))) * scale
+        self.low = float(pick(rng, (30, 40, 50))) * scale
+        self.high = self.low + float(pick(rng, (20, 30))) * scale
+        self.alpha = float(pick(rng, (0.2, 0.3, 0.4, 0.5, 0.6, 0.8)))
+        self.grid = np.linspace(*self.data_range, 401)
+        self.expected = self._function([self.low - self.width, self.low, self.high,
+                                        self.high + self.width], [0, self.alpha, self.alpha, 0])
+
+    def _function(self, points, values):
+        return cm.TransferFunction(points, values)(self.grid)
+
+    def mistakes(self):
+        lo, hi, w, a = self.low, self.high, self.width, self.alpha
+        return [
+            Mistake(self._function([lo, lo + w, hi - w, hi], [0, a, a, 0]), r"Your ramps lie "
+                    r"inside the band: values just inside $[l, h]$ are not fully shown. The band "
+                    r"itself must have opacity $\alpha$; the ramps go outside it, from $l - w$ to "
+                    r"$l$ and from $h$ to $h + w$.", "ramps inside"),
+            Mistake(self._function([lo, lo, hi, hi], [0, a, a, 0]), r"Your function jumps at "
+                    r"the band's edges. Sudden jumps in opacity paint hard artificial edges into "
+                    r"a volume rendering; the question asks for linear ramps of width $w$ outside "
+                    r"the band.", "no ramps"),
+            Mistake(self._function([lo - w, lo, hi, hi + w], [0, 1, 1, 0]), r"The band is fully "
+                    r"opaque: it should have opacity $\alpha$, so that it stays translucent and "
+                    r"what lies behind it shows through.", "full opacity"),
+            Mistake(self._function([lo - w, lo, hi, hi + w], [a, 0, 0, a]), r"Your function is "
+                    r"upside down: it hides the band and shows everything else. The band gets "
+                    r"opacity $\alpha$, values far from it 0.", "inverted"),
+        ]
+
+    def _check(self, answer):
+        tf = _read_control_points(answer)
+        if isinstance(tf, Feedback):
+            return tf
+        got = tf(self.grid)
+        if np.allclose(got, self.expected, atol=ATOL):
+            return Feedback("correct", "Your transfer function is right: it shows the band "
+                            "with the asked opacity and fades out over the ramps.")
+        for mistake in self._mistakes:
+            if np.allclose(got, mistake.value, atol=ATOL):
+                return Feedback("wrong", mistake.explanation, mistake.key)
+        k = int(np.argmax(np.abs(got - self.expected)))
+        return Feedback(
+            "wrong", f"At $s = {_num(self.grid[k])}$ your function gives opacity "
+            f"${_num(got[k])}$ but it should be ${_num(self.expected[k])}$. Sketch the "
+            r"function first: 0 up to $l - w$, rising linearly to $\alpha$ at $l$, flat until "
+            r"$h$, falling to 0 at $h + w$; its control points are the four corners.",
+            "function differs")
+
+    def statement(self):
+        lo, hi, w = self.low, self.high, self.width
+        return (
+            rf"A CT volume holds values in $[{_num(self.data_range[0])}, "
+            rf"{_num(self.data_range[1])}]$. A tissue has the values $[l, h] = [{_num(lo)}, "
+            rf"{_num(hi)}]$. Design a piecewise-linear opacity transfer function that gives the "
+            rf"tissue the opacity $\alpha = {_num(self.alpha)}$, makes every value below "
+            rf"$l - w$ or above $h + w$ (with $w = {_num(w)}$) fully transparent, and changes "
+            r"linearly in between (soft edges)." "\n\n"
+            r"**Answer:** the control points as a list of `(scalar, opacity)` pairs in "
+            r"increasing order of the scalar, e.g. `[(10, 0), (20, 0.5), (30, 0)]` (outside its "
+            r"first and last points the function keeps its end values), or a "
+            r"`TransferFunction`. Any control points that give the same function are right."
+            "\n\n" + data_note("low", "high", "width", "alpha", "data_range"))
+
+
+# ---------------------------------------------------------------------------------------------
+# Colour maps
+# ---------------------------------------------------------------------------------------------
+
+#: Small colour maps whose control colours are easy to work with by hand.
+_SMALL_MAPS = {
+    "rainbow": np.array([[0, 0, 1], [0, 1, 1], [0, 1, 0], [1, 1, 0], [1, 0, 0]], float),
+    "blue-white-red": np.array([[0, 0, 1], [1, 1, 1], [1, 0, 0]], float),
+    "heat": np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [1, 1, 1]], float),
+}
+_COLOUR_NAMES = {(0, 0, 1): "blue", (0, 1, 1): "cyan", (0, 1, 0): "green", (1, 1, 0): "yellow",
+                 (1, 0, 0): "red", (1, 1, 1): "white", (0, 0, 0): "black"}
+
+
+class ColormapLookup(_Chapter10):
+    r"""The colour a data value gets from a small colour map.
+
+    Normalise :math:`t = (v - a)/(b - a)`; with :math:`n` control colours at
+    :math:`t_k = k / (n - 1)`, position :math:`p = t (n - 1)`, :math:`k = \lfloor p \rfloor`,
+    :math:`f = p - k`: colour :math:`(1 - f) C_k + f C_{k+1}`.
+
+    Attributes: ``name``, ``colors`` (the control colours, rows), ``value``, ``in_range``.
+
+    Examples
+    --------
+    >>> ex = ColormapLookup(seed=0)
+    >>> ex.check(cm.apply_colormap(ex.value, ex.colors, in_range=ex.in_range)).status
+    'correct'
+    >>> ex.check(cm.apply_colormap(ex.value, ex.colors[::-1], in_range=ex.in_range)).diagnosis
+    'reversed'
+    """
+
+    title = "Look a value up in a colour map"
+    answer_form = "vector"
+    what = "the colour"
+    may_coincide = ("forgot a",)
+    hint = (r"Normalise first, $t = \frac{v - a}{b - a}$; then $p = t\,(n - 1)$ tells between "
+            r"which two control colours you are ($k = \lfloor p \rfloor$) and how far "
+            r"($f = p - k$): the colour is $(1 - f)\,C_k + f\,C_{k+1}$, channel by channel.")
+
+    def draw(self, rng):
+        self.name = str(pick(rng, tuple(_SMALL_MAPS)))
+        self.colors = _SMALL_MAPS[self.name]
+        n = len(self.colors)
+        a = float(pick(rng, (-20, 0, 10, 50)))
+        span = float((n - 1) * 4 * pick(rng, (1, 2, 5, 10)))
+        self.in_range = (a, a + span)
+        k = int(rng.integers(0, n - 1))
+        f = float(pick(rng, (0.25, 0.5, 0.75)))
+        self.value = a + (k + f) / (n - 1) * span
+        self.expected = cm.apply_colormap(self.value, self.colors, in_range=self.in_range)
+
+    def mistakes(self):
+        (a, b), c, n = self.in_range, self.colors, len(self.colors)
+        t = (self.value - a) / (b - a)
+        p = t * (n - 1)
+        return [
+            Mistake(c[int(np.floor(p))], r"You took the control colour just below instead of "
+                    r"interpolating. Colours between control points are mixed linearly: "
+                    r"$(1 - f)\,C_k + f\,C_{k+1}$ with $f = p - k$.", "no interpolation"),
+            Mistake(cm.apply_colormap(min(t * n / (n - 1), 1.0), c, in_range=(0, 1)),
+                    rf"You multiplied $t$ by $n = {n}$. The {n} control colours split $[0, 1]$ "
+                    rf"into $n - 1 = {n - 1}$ intervals, so the position is $p = t\,(n - 1)$.",
+                    "n intervals"),
+            Mistake(cm.apply_colormap(self.value, c[::-1], in_range=self.in_range), r"You read "
+                    r"the map backwards: its first colour belongs to the smallest value $a$ "
+                    r"($t = 0$), its last colour to $b$.", "reversed"),
+            Mistake(cm.apply_colormap(min(max(self.value / b, 0.0), 1.0), c, in_range=(0, 1)),
+                    r"You normalised by $v / b$ and forgot to subtract $a$: $t = "
+                    r"\frac{v - a}{b - a}$.", "forgot a"),
+        ]
+
+    def statement(self):
+        names = ", ".join(f"$C_{k} = {_vec(c)}$ ({_COLOUR_NAMES[tuple(int(x) for x in c)]})"
+                          for k, c in enumerate(self.colors))
+        (a, b) = self.in_range
+        return (
+            rf"The colour map *{self.name}* has {len(self.colors)} control colours (RGB), "
+            rf"evenly spaced over $t \in [0, 1]$ and interpolated linearly: " + names + r". It "
+            rf"is spread over the data range $[a, b] = [{_num(a)}, {_num(b)}]$. Which colour does "
+            rf"the value $v = {_num(self.value)}$ get?" "\n\n"
+            r"**Answer:** the colour as a list of 3 numbers `[r, g, b]` in [0, 1]. " + DECIMALS
+            + "\n\n" + data_note("colors", "value", "in_range"))
+
+
+_COMPONENTS = (0.0, 0.2, 0.4, 0.6, 0.8, 1.0)
+
+
+def _lin(c):
+    c = np.asarray(c, dtype=float)
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def _lstar(y):
+    return 116 * np.cbrt(y) - 16 if y > (6 / 29) ** 3 else y * (29 / 3) ** 3
+
+
+_WEIGHTS = np.array([0.2126, 0.7152, 0.0722])
+
+
+class LightnessOfColour(_Chapter10):
+    r"""The perceived lightness :math:`L^*` of an sRGB colour.
+
+    Undo the gamma encoding channel by channel, weigh the linear channels into the relative
+    luminance :math:`Y = 0.2126 R + 0.7152 G + 0.0722 B`, and compress:
+    :math:`L^* = 116\, Y^{1/3} - 16` (the CIE 1976 lightness, white :math:`Y_n = 1`).
+
+    Attributes: ``rgb``.
+
+    Examples
+    --------
+    >>> ex = LightnessOfColour(seed=0)
+    >>> ex.check(float(cm.srgb_to_lab(ex.rgb)[0])).status
+    'correct'
+    >>> ex.check(100 * float(cm.luminance(ex.rgb))).diagnosis
+    'luminance, not lightness'
+    """
+
+    title = "Lightness of a colour"
+    answer_form = "number"
+    what = r"$L^*$"
+    hint = (r"Three steps: linearise each channel, weigh them into $Y$, then "
+            r"$L^* = 116\,Y^{1/3} - 16$.")
+
+    def draw(self, rng):
+        self.rgb = np.array([pick(rng, _COMPONENTS) for _ in range(3)])
+        self.expected = float(cm.srgb_to_lab(self.rgb)[0])
+
+    def acceptable(self):
+        return 10 < self.expected < 95
+
+    def mistakes(self):
+        lin = _lin(self.rgb)
+        y = float(_WEIGHTS @ lin)
+        return [
+            Mistake(_lstar(float(_WEIGHTS @ self.rgb)), r"You weighed the stored (gamma-encoded) "
+                    r"values. sRGB values are not proportional to light: undo the encoding "
+                    r"first, $c_{lin} = \left(\frac{c + 0.055}{1.055}\right)^{2.4}$ (or "
+                    r"$c / 12.92$ for small $c$).", "not linearised"),
+            Mistake(_lstar(float(lin.mean())), r"You averaged the three channels. The eye is "
+                    r"far more sensitive to green than to blue: weigh them, "
+                    r"$Y = 0.2126 R + 0.7152 G + 0.0722 B$.", "channel mean"),
+            Mistake(100 * y, r"That is the relative luminance $Y$ (times 100), which is "
+                    r"proportional to light, not to perceived lightness. Compress it: "
+                    r"$L^* = 116\,Y^{1/3} - 16$.", "luminance, not lightness"),
+            Mistake(116 * np.cbrt(y), r"You forgot the $-16$: $L^* = 116\,Y^{1/3} - 16$, so "
+                    r"that black has $L^* = 0$ and white $L^* = 100$.", "forgot 16"),
+        ]
+
+    def statement(self):
+        return (
+            rf"What is the CIE lightness $L^*$ of the sRGB colour $(r, g, b) = {_vec(self.rgb)}$? "
+            r"Linearise each channel with $c_{lin} = c / 12.92$ for $c \le 0.04045$ and "
+            r"$c_{lin} = \left(\frac{c + 0.055}{1.055}\right)^{2.4}$ otherwise; the relative "
+            r"luminance is $Y = 0.2126\,R_{lin} + 0.7152\,G_{lin} + 0.0722\,B_{lin}$; and "
+            r"$L^* = 116\,Y^{1/3} - 16$ (for $Y > 0.0089$)." "\n\n"
+            r"**Answer:** one number between 0 and 100. Give at least 2 decimals (or let numpy "
+            r"compute it)." "\n\n" + data_note("rgb"))
+
+
+#: The colour maps of the lightness question.
+_LIGHTNESS_MENU = tuple(cm.COLORMAP_NAMES)
+_DIVERGING = {"bwr", "coolwarm"}
+_SAMPLES = 9
+
+
+def _monotonic(values):
+    d = np.diff(values)
+    return bool((d >= 0).all() or (d <= 0).all())
+
+
+def _read_names(answer, menu):
+    if _placeholder(answer):
+        return Feedback("unanswered", UNANSWERED)
+    form = ("Give a list of map names from the table, e.g. `['viridis', 'grey']` (`[]` if none "
+            "qualifies).")
+    if isinstance(answer, (str, bytes, dict)) or not isinstance(
+            answer, (list, tuple, set, frozenset, np.ndarray)):
+        return Feedback("invalid", form, "unreadable")
+    names = set()
+    for item in answer:
+        if not isinstance(item, str):
+            return Feedback("invalid", form, "unreadable")
+        name = item.strip().lower()
+        if name not in menu:
+            return Feedback("invalid", f"{item!r} is not in the table. The maps are: "
+                            + ", ".join(f"`{n}`" for n in menu) + ".", "unreadable")
+        names.add(name)
+    return names
+
+
+class MonotonicMaps(_Chapter10):
+    r"""Which colour maps, judged by their lightness curves, can show an ordered quantity?
+
+    A map for ordered data needs a lightness :math:`L^*` that only rises (or only falls) along
+    it. The statement tabulates :math:`L^*` at 9 points of four maps; the answer is the set of
+    the monotonic ones. Diagnosis ``"extra: <name>"`` or ``"missing: <name>"`` for the first
+    wrong map in the table's order.
+
+    Attributes: ``maps`` (the names), ``lightness`` (one row of 9 values of :math:`L^*` per map).
+
+    Examples
+    --------
+    >>> ex = MonotonicMaps(seed=0)
+    >>> ex.check(sorted(ex.expected)).status
+    'correct'
+    >>> ex.check(list(ex.maps)).diagnosis.startswith("extra: ")
+    True
+    >>> ex.check("viridis").status
+    'invalid'
+    """
+
+    title = "Which maps show order?"
+    answer_form = "custom"
+
+    def draw(self, rng):
+        idx = rng.choice(len(_LIGHTNESS_MENU), size=4, replace=False)
+        self.maps = tuple(_LIGHTNESS_MENU[i] for i in sorted(idx))
+        self.lightness = np.array([np.round(cm.lightness(m, _SAMPLES), 1) for m in self.maps])
+        self.expected = {m for m, row in zip(self.maps, self.lightness) if _monotonic(row)}
+
+    def acceptable(self):
+        verdicts = {m for m in self.maps if cm.is_monotonic_lightness(m)}
+        return verdicts == self.expected and 0 < len(self.expected) < 4
+
+    def separated(self, mistakes):
+        return True
+
+    def _reason(self, name):
+        row = self.lightness[self.maps.index(name)]
+        if name in self.expected:
+            way = "rises" if row[-1] > row[0] else "falls"
+            return (rf"**{name}**: its $L^*$ {way} at every step, from ${_num(row[0], 1)}$ to "
+                    rf"${_num(row[-1], 1)}$, so darker and lighter read as less and more: it "
+                    "qualifies.")
+        d = np.diff(row)
+        up = d[np.flatnonzero(d)[0]] > 0                 # the first direction of change
+        turn = int(np.argmax(d < 0 if up else d > 0))    # the first step the other way
+        ways = ("rises", "falls") if up else ("falls", "rises")
+        text = (rf"**{name}**: its $L^*$ {ways[0]} from ${_num(row[0], 1)}$ to "
+                rf"${_num(row[turn], 1)}$ and then {ways[1]} to ${_num(row[turn + 1], 1)}$: not "
+                r"monotonic. Equal steps of lightness then do not mean equal steps of the data, "
+                r"and bands appear where the lightness turns.")
+        if name in _DIVERGING:
+            text += (" It is a *diverging* map, lightest in the middle: right for data with a "
+                     "meaningful centre, not for a plain ordered quantity.")
+        return text
+
+    def _check(self, answer):
+        names = _read_names(answer, self.maps)
+        if isinstance(names, Feedback):
+            return names
+        if names == self.expected:
+            return Feedback("correct", f"Exactly these {len(names)} maps have a monotonic "
+                            "lightness.")
+        wrong = [m for m in self.maps if (m in names) != (m in self.expected)]
+        first = wrong[0]
+        key = ("missing: " if first in self.expected else "extra: ") + first
+        return Feedback("wrong", " ".join(self._reason(m) for m in wrong), key)
+
+    def statement(self):
+        header = "| map | " + " | ".join(f"$t = {_num(k / 8)}$" for k in range(_SAMPLES)) + " |"
+        rule = "|---" * (_SAMPLES + 1) + "|"
+        rows = "\n".join(f"| `{m}` | " + " | ".join(_num(v, 1) for v in row) + " |"
+                         for m, row in zip(self.maps, self.lightness))
+        return (
+            r"The table gives the perceived lightness $L^*$ (0 black, 100 white) at nine evenly "
+            r"spaced points $t$ along four colour maps. Which of them are suitable for showing "
+            r"an ordered quantity (such as a density) so that darker and lighter read as less "
+            r"and more, in colour and in a black-and-white print?" "\n\n"
+            + header + "\n" + rule + "\n" + rows + "\n\n"
+            r"**Answer:** the list of the names of the suitable maps, e.g. `['grey']` (the "
+            r"order does not matter)." "\n\n" + data_note("maps", "lightness"))
+
+
+#: The kinds of colour map.
+MAP_KINDS = ("sequential", "diverging", "qualitative")
+
+#: Data sets and the kind of colour map each needs.
+SCENARIOS = (
+    ("the yearly rainfall in millimetres over a country", "sequential"),
+    ("the population density of the districts of a city", "sequential"),
+    ("the density of a CT scan, from air to bone", "sequential"),
+    ("the wind speed over an ocean", "sequential"),
+    ("the concentration of a pollutant in a river", "sequential"),
+    ("the temperature anomaly: this year's temperature minus the 30-year average",
+     "diverging"),
+    ("the election margin: the share of party A minus the share of party B, per district",
+     "diverging"),
+    ("correlation coefficients between -1 and 1 in a matrix", "diverging"),
+    ("the profit or loss of each branch of a company", "diverging"),
+    ("the land use of each parcel: forest, farmland, water, city", "qualitative"),
+    ("the labels of a segmented scan: bone, muscle, fat, air", "qualitative"),
+    ("the cluster number (1 to 6) that a clustering algorithm gave each point", "qualitative"),
+)
+
+_KIND_REASONS = {
+    "sequential": "ordered values from low to high with no special value in between: a "
+                  "sequential map, one hue or a perceptual map like viridis, its lightness rising "
+                  "with the value",
+    "diverging": "values on both sides of a meaningful centre (zero, the average): a diverging "
+                 "map, two hues that meet in a light neutral colour at the centre, so that the "
+                 "sign and the size of the deviation both show",
+    "qualitative": "categories without any order: a qualitative map, clearly different hues of "
+                   "similar lightness, so that no category looks like 'more' than another",
+}
+
+
+class ChooseMapKind(_Chapter10):
+    r"""Which kind of colour map (sequential, diverging, qualitative) a data set needs.
+
+    Attributes: ``scenario`` (the data set, in words), ``menu`` (:data:`MAP_KINDS`).
+
+    Examples
+    --------
+    >>> ex = ChooseMapKind(seed=0)
+    >>> ex.check(ex.expected).status
+    'correct'
+    >>> wrong = [k for k in MAP_KINDS if k != ex.expected][0]
+    >>> ex.check(wrong).diagnosis == f"{wrong} instead of {ex.expected}"
+    True
+    >>> ex.check("rainbow").status
+    'invalid'
+    """
+
+    title = "Choose the kind of colour map"
+    answer_form = "custom"
+    menu = MAP_KINDS
+
+    def draw(self, rng):
+        self.scenario, self.expected = pick(rng, SCENARIOS)
+
+    def separated(self, mistakes):
+        return True
+
+    def _check(self, answer):
+        if _placeholder(answer):
+            return Feedback("unanswered", UNANSWERED)
+        if not isinstance(answer, str) or answer.strip().lower() not in self.menu:
+            return Feedback("invalid", "Answer with one of the strings "
+                            + ", ".join(f"`'{k}'`" for k in self.menu) + ".", "unreadable")
+        kind = answer.strip().lower()
+        if kind == self.expected:
+            return Feedback("correct", f"Right: these are {_KIND_REASONS[kind]}.")
+        return Feedback("wrong", f"A {kind} map is meant for {_KIND_REASONS[kind].split(':')[0]}."
+                        f" These data are {_KIND_REASONS[self.expected]}.",
+                        f"{kind} instead of {self.expected}")
+
+    def statement(self):
+        return (
+            rf"You are to show **{self.scenario}** on a map or in an image. Which kind of colour "
+            r"map suits these data: a *sequential* map (one direction, light to dark), a "
+            r"*diverging* map (two directions from a neutral centre) or a *qualitative* map "
+            r"(distinct colours without order)?" "\n\n"
+            r"**Answer:** one of the strings `'sequential'`, `'diverging'`, `'qualitative'`."
+            "\n\n" + data_note("scenario", "menu"))
+
+
+#: The exercises of chapter 10, in the order of the solutions notebook.
+EXERCISES = (
+    NormalizeValues,
+    Denormalize,
+    TransferValues,
+    ThresholdBands,
+    DesignOpacity,
+    ColormapLookup,
+    LightnessOfColour,
+    MonotonicMaps,
+    ChooseMapKind,
+)
