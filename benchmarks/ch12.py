@@ -100,4 +100,32 @@ def operations(quick=False):
 
 
 def widgets(quick=False):
-    return []
+    """Median update of the Phong explorer (a material slider and the light's azimuth: the
+    sphere, its three terms and the three interpolated shadings) and of the ambient-occlusion
+    explorer (the ray-count slider; its rays are cast once per scene, before timing)."""
+    import matplotlib
+
+    matplotlib.use("module://ipympl.backend_nbagg")
+    import matplotlib.pyplot as plt
+
+    from benchmarks import widget_row
+    from course_lib.widgets import occlusion, phong
+
+    repeat = 5 if quick else 40
+    rows = []
+    explorer = phong.PhongExplorer()
+    explorer.fig.canvas.draw()
+    rows.append(widget_row("Phong explorer (k_s slider)",
+                           lambda i: setattr(explorer.ks, "value", 0.2 + 0.02 * (i % 30)),
+                           explorer.fig.canvas.draw, repeat))
+    rows.append(widget_row("Phong explorer (light azimuth slider)",
+                           lambda i: setattr(explorer.azimuth, "value", -60.0 + 3 * (i % 40)),
+                           explorer.fig.canvas.draw, repeat))
+    plt.close(explorer.fig)
+    explorer = occlusion.OcclusionExplorer()
+    explorer.fig.canvas.draw()
+    rows.append(widget_row("ambient-occlusion explorer (rays slider)",
+                           lambda i: setattr(explorer.samples, "value", 2 + 7 * (i % 36)),
+                           explorer.fig.canvas.draw, repeat))
+    plt.close(explorer.fig)
+    return rows

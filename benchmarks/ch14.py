@@ -41,4 +41,36 @@ def operations(quick=False):
 
 
 def widgets(quick=False):
-    return []
+    """Median update of the barycentric explorer (dragging P) and of the texture explorer
+    (turning the view: a pyvista render off screen and its JPEG; changing the texture's
+    frequency: the texture, its magnified picture and the filtering panel recomputed)."""
+    import matplotlib
+
+    matplotlib.use("module://ipympl.backend_nbagg")
+    import matplotlib.pyplot as plt
+
+    from benchmarks import widget_row
+    from course_lib.widgets import barycentric, texture
+
+    repeat = 5 if quick else 40
+    rows = []
+    explorer = barycentric.BarycentricExplorer()
+    explorer.fig.canvas.draw()
+    start = explorer.state.point.copy()
+    explorer.drag.press(*start)
+
+    def move(i):
+        explorer.drag.move(start[0] + 0.8 * np.cos(0.3 * i), start[1] + 0.8 * np.sin(0.3 * i))
+    rows.append(widget_row("barycentric explorer (drag P)", move, explorer.fig.canvas.draw,
+                           repeat))
+    plt.close(explorer.fig)
+    explorer = texture.TextureExplorer()
+    rows.append(widget_row("texture explorer (view azimuth slider, pyvista off screen)",
+                           lambda i: setattr(explorer.azimuth, "value", -60.0 + 2 * (i % 60)),
+                           lambda: explorer.png(), repeat))
+    rows.append(widget_row("texture explorer (frequency slider: texture and filtering)",
+                           lambda i: setattr(explorer.frequency, "value", 2.0 + i % 24),
+                           lambda: explorer.png(), repeat))
+    explorer.plotter.close()
+    plt.close(explorer.fig)
+    return rows

@@ -1,0 +1,406 @@
+r"""Phong explorer: the four terms of the Phong model on a sphere, and flat / Gouraud / Phong
+shading of a coarse sphere mesh side by side.
+
+Top row: a sphere lit by a directional light and seen by an orthographic camera along -z, shaded
+per pixel with normals computed analytically (:math:`N = (x, y, \sqrt{1 - x^2 - y^2})`); next
+to it the terms it is the sum of, :math:`I = (I_e + I_g) + I_d + I_s` (emission and ambient,
+diffuse, specular), each in its own small picture. Sliders set :math:`k_a, k_d, k_s`, the
+shininess :math:`n`, the emission, the light's direction (two angles) and colour, the object's
+colour, and switch between the Phong (:math:`R \cdot V`) and Blinn-Phong (:math:`N \cdot H`)
+highlight.
+
+Bottom row: the same model and light on a triangle mesh of the sphere, rendered by the z-buffer
+with **flat** shading (one evaluation per triangle), **Gouraud** shading (evaluation at the
+vertices, colours interpolated) and **Phong** shading (normals interpolated, evaluation per
+pixel). The mesh is rasterized once per resolution: the z-buffer's perspective-correct
+barycentric weights of every pixel are kept (:func:`interpolation_buffers`), so a slider move
+only re-evaluates the illumination model (the same pictures as
+:func:`course_lib.shading.render_shaded`, a few milliseconds instead of a re-render).
+"""
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from .. import draw, shading, viewing, visibility
+from ._base import Explorer, degree_sliders
+
+__all__ = ["MODELS", "PhongExplorer", "State", "interpolation_buffers", "light_direction",
+           "scene", "sphere_normals"]
+
+SIZE = 128                  # pixels of the analytic sphere and of each term (per side)
+MESH_SIZE = 96              # pixels of each interpolated-shading picture
+EXTENT = 1.08               # the sphere pictures show [-EXTENT, EXTENT]^2
+EYE = np.array([0.0, 0.0, 4.0])
+FOV_DEG = 32.0
+BACKGROUND = 0.94
+MODELS = ("Phong", "Blinn-Phong")
+SHADINGS = ("flat", "gouraud", "phong")
+
+
+@dataclass
+class State:
+    """Material, light and model of the explorer (colours as ``#rrggbb``; angles in degrees).
+
+    Examples
+    --------
+    >>> s = State()
+    >>> s.model, s.ks, s.segments
+    ('Phong', 0.5, 12)
+    """
+
+    ka: float = 0.15
+    kd: float = 0.7
+    ks: float = 0.5
+    shininess: float = 32.0
+    emission: float = 0.0
+    light_azimuth: float = 35.0
+    light_elevation: float = 30.0
+    light_color: str = "#ffffff"
+    color: str = "#3f86e8"
+    model: str = "Phong"
+    segments: int = 12
+
+
+def _rgb(hex_color):
+    """``#rrggbb`` -> RGB floats in [0, 1]."""
+    h = hex_color.lstrip("#")
+    if len(h) != 6:
+        raise ValueError(f"colour must be '#rrggbb', got {hex_color!r}")
+    return np.array([int(h[k:k + 2], 16) / 255.0 for k in (0, 2, 4)])
+
+
+def light_direction(azimuth_deg, elevation_deg):
+    r"""The unit vector towards a directional light, from two angles in degrees.
+
+    .. math:: L = (\cos e \sin a,\ \sin e,\ \cos e \cos a)
+
+    Azimuth :math:`a` turns about the vertical y axis from the viewer's direction +z towards +x
+    (to the right on screen); elevation :math:`e` lifts the light towards +y (up). ``(0, 0)``
+    is a light at the viewer.
+
+    Examples
+    --------
+    >>> light_direction(0, 0).tolist(), np.round(light_direction(90, 0), 12).tolist()
+    ([0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
+    """
+    a, e = np.radians([azimuth_deg, elevation_deg])
+    return np.array([np.cos(e) * np.sin(a), np.sin(e), np.cos(e) * np.cos(a)])
+
+
+@lru_cache(maxsize=4)
+def sphere_normals(size=SIZE):
+    r"""Per-pixel normals of the unit sphere seen along -z (orthographic), and its mask.
+
+    The pixel centres cover :math:`[-1.08, 1.08]^2` (row 0 at the bottom); inside the disk
+    :math:`x^2 + y^2 < 1` the visible point is :math:`(x, y, \sqrt{1 - x^2 - y^2})`, which on
+    the unit sphere is also its normal: no mesh, no interpolation.
+
+    Returns
+    -------
+    normals : ndarray, shape (size, size, 3)
+        Unit normals inside the disk (+z outside).
+    mask : ndarray of bool, shape (size, size)
+
+    Examples
+    --------
+    >>> n, mask = sphere_normals(8)
+    >>> n.shape, bool(np.allclose(np.linalg.norm(n, axis=-1), 1)), int(mask.sum())
+    ((8, 8, 3), True, 44)
+    """
+    s = ((np.arange(size) + 0.5) / size * 2 - 1) * EXTENT
+    x, y = np.meshgrid(s, s)
+    r2 = x * x + y * y
+    mask = r2 < 1.0
+    z = np.sqrt(np.maximum(0.0, 1.0 - r2))
+    normals = np.where(mask[..., None], np.stack([x, y, z], axis=-1), [0.0, 0.0, 1.0])
+    normals.setflags(write=False)
+    mask.setflags(write=False)
+    return normals, mask
+
+
+def _camera():
+    view = viewing.look_at(EYE, [0.0, 0.0, -1.0], [0.0, 1.0, 0.0])
+    return view, viewing.perspective(np.radians(FOV_DEG), 1.0, 1.0, 10.0)
+
+
+@lru_cache(maxsize=8)
+def interpolation_buffers(segments):
+    """The mesh sphere rasterized once: visible face and perspective-correct weights per pixel.
+
+    The sphere mesh (:func:`course_lib.shading.uv_sphere` with `segments` and ``segments // 2``
+    rings) is drawn by :func:`course_lib.visibility.render_depth` with every triangle given its
+    own three corners and the per-corner values (1, 0, 0), (0, 1, 0), (0, 0, 1): the z-buffer's
+    interpolated "colour" of a pixel is then exactly the perspective-correct barycentric weights
+    of the pixel in its visible triangle. Any per-vertex quantity (colours for Gouraud, positions
+    and normals for Phong) is then interpolated by one weighted sum, without rasterizing again.
+
+    Returns
+    -------
+    vertices : ndarray, shape (n, 3)
+    faces : ndarray of int, shape (m, 3)
+    ids : ndarray of int, shape (MESH_SIZE, MESH_SIZE)
+        Visible face per pixel, -1 for background.
+    weights : ndarray, shape (MESH_SIZE, MESH_SIZE, 3)
+        Barycentric weights of the pixel centre in that face (0 on background).
+
+    Examples
+    --------
+    >>> v, f, ids, w = interpolation_buffers(8)
+    >>> len(f), bool(np.allclose(w[ids >= 0].sum(axis=1), 1))
+    (48, True)
+    """
+    v, f = shading.uv_sphere(segments=segments, rings=max(segments // 2, 2))
+    view, proj = _camera()
+    corners = np.tile(np.eye(3), (len(f), 1))
+    zb = visibility.render_depth(v[f].reshape(-1, 3), np.arange(3 * len(f)).reshape(-1, 3),
+                                 view, proj, MESH_SIZE, MESH_SIZE, values=corners)
+    weights = np.where((zb.ids >= 0)[..., None], zb.image, 0.0)
+    for array in (v, f, zb.ids, weights):
+        array.setflags(write=False)
+    return v, f, zb.ids, weights
+
+
+def _views(points):
+    d = EYE - points
+    return d / np.linalg.norm(d, axis=-1, keepdims=True)
+
+
+def _interpolated(segments, illuminate, light, material):
+    """Flat, Gouraud and Phong pictures of the mesh sphere (what render_shaded draws)."""
+    v, f, ids, w = interpolation_buffers(segments)
+    seen = ids >= 0
+    face = ids[seen]
+    images = {}
+    # flat: one evaluation per visible face, at its centroid, with the face normal
+    visible = np.unique(face)
+    colours = np.zeros((len(f), 3))
+    centroids = v[f[visible]].mean(axis=1)
+    colours[visible] = illuminate(centroids, shading.face_normals(v, f[visible]),
+                                  _views(centroids), light, material).total
+    images["flat"] = colours[face]
+    # Gouraud: evaluate at the vertices (exact sphere normals), interpolate the colours
+    vertex_colours = illuminate(v, v, _views(v), light, material).total
+    images["gouraud"] = np.einsum("pk,pkc->pc", w[seen], vertex_colours[f[face]])
+    # Phong: interpolate position and normal, evaluate per pixel (the normal renormalized)
+    corner_points = v[f[face]]
+    points = np.einsum("pk,pkc->pc", w[seen], corner_points)
+    images["phong"] = illuminate(points, points, _views(points), light, material).total
+    out = {}
+    for name, values in images.items():
+        picture = np.full((MESH_SIZE, MESH_SIZE, 3), BACKGROUND)
+        picture[seen] = np.clip(values, 0.0, 1.0)
+        out[name] = picture
+    return out, len(f), len(v)
+
+
+def scene(state):
+    r"""Pure part: the sphere's picture and its terms, and the three interpolated shadings.
+
+    Returns
+    -------
+    dict
+        ``total``, ``ambient`` (emission + ambient), ``diffuse``, ``specular``: RGB pictures
+        of shape (SIZE, SIZE, 3), clipped to [0, 1], background grey; ``raw``: the unclipped
+        :class:`course_lib.shading.PhongTerms` inside the disk; ``mask``; ``light`` (the unit
+        vector L); ``highlight`` (where on the picture :math:`N = H`, the centre of the
+        highlight, or None if it is on the far side); ``flat``, ``gouraud``, ``phong``:
+        pictures of shape (MESH_SIZE, MESH_SIZE, 3); ``triangles``, ``vertices``; ``text``.
+
+    Examples
+    --------
+    >>> s = scene(State(ka=0.0, kd=0.0, ks=1.0, light_azimuth=0, light_elevation=0))
+    >>> s["total"].shape, s["phong"].shape, s["highlight"]
+    ((128, 128, 3), (96, 96, 3), (0.0, 0.0))
+    >>> float(s["raw"].specular.max())        # light at the viewer: R = V at the centre
+    1.0
+    """
+    if state.model not in MODELS:
+        raise ValueError(f"model must be one of {MODELS}, got {state.model!r}")
+    normals, mask = sphere_normals(SIZE)
+    colour = _rgb(state.color)
+    light_rgb = _rgb(state.light_color)
+    direction = light_direction(state.light_azimuth, state.light_elevation)
+    light = shading.directional_light(direction, intensity=light_rgb)
+    material = shading.colored_material(colour, state.ka, state.kd, state.ks, state.shininess,
+                                        emission=state.emission * colour)
+    illuminate = shading.phong if state.model == "Phong" else shading.blinn_phong
+    terms = illuminate(None, normals[mask], [0.0, 0.0, 1.0], light, material)
+    out = {}
+    for name, values in (("total", terms.total), ("ambient", terms.emission + terms.ambient),
+                         ("diffuse", terms.diffuse), ("specular", terms.specular)):
+        picture = np.full((SIZE, SIZE, 3), BACKGROUND)
+        picture[mask] = np.clip(values, 0.0, 1.0)
+        out[name] = picture
+    h = direction + np.array([0.0, 0.0, 1.0])
+    norm = np.linalg.norm(h)
+    highlight = None
+    if norm > 1e-9 and h[2] / norm > 0:
+        highlight = (float(round(h[0] / norm, 12)), float(round(h[1] / norm, 12)))
+    pictures, triangles, vertices = _interpolated(state.segments, illuminate, light, material)
+    out.update(pictures)
+    angle = np.degrees(np.arccos(np.clip(direction[2], -1, 1)))
+    over = float(terms.total.max())
+    width = np.degrees(np.arccos(0.5 ** (1.0 / state.shininess)))
+    if state.model == "Phong":
+        spec = (f"Phong highlight: k<sub>s</sub> max(R·V, 0)<sup>n</sup>, half as bright "
+                f"{width:.0f}° away from the mirror direction (n = {state.shininess:.0f}).")
+    else:
+        spec = (f"Blinn-Phong highlight: k<sub>s</sub> max(N·H, 0)<sup>n</sup>. The angle between N "
+                f"and H is about half the angle between R and V, so the highlight is about twice as "
+                f"wide as Phong's with the same n; n ≈ {4 * state.shininess:.0f} (4n) matches it.")
+    text = (f"The light is {angle:.0f}° from the view direction. "
+            + ("It is behind the sphere: most of the visible half gets only I<sub>e</sub> + "
+               "I<sub>g</sub>. " if direction[2] < 0 else "")
+            + spec
+            + f" Brightest pixel: {over:.2f}"
+            + (" — above 1, clipped to white (k<sub>a</sub> + k<sub>d</sub> + k<sub>s</sub> > 1 "
+               "reflects more than the light brings)." if over > 1.0 + 1e-9 else ".")
+            + f" Bottom row: a mesh of {triangles} triangles ({vertices} vertices). Flat: one "
+            "colour per triangle. Gouraud: the model only at the vertices, so a highlight "
+            "falling between them is smeared or lost. Phong: the normal interpolated and the "
+            "model evaluated per pixel.")
+    out.update(raw=terms, mask=mask, light=direction, highlight=highlight,
+               triangles=triangles, vertices=vertices, text=text)
+    return out
+
+
+class PhongExplorer(Explorer):
+    """Sliders for the material, the light and the model; the sphere, its terms, and three
+    interpolated shadings of a mesh.
+
+    In a notebook, after ``%matplotlib widget``, end a cell with ``PhongExplorer()``.
+
+    Examples
+    --------
+    >>> explorer = PhongExplorer()
+    >>> explorer.ks.value = 0.0
+    >>> float(explorer.images["specular"].get_array()[80, 80].max()) == BACKGROUND
+    False
+    >>> explorer.model.value = "Blinn-Phong"
+    >>> "Blinn-Phong" in explorer.info.value
+    True
+    """
+
+    summary = ("Phong explorer (interactive): a sphere with its emission + ambient, diffuse and "
+               "specular terms; k_a, k_d, k_s, shininess, light direction and colour, Phong or "
+               "Blinn-Phong; flat, Gouraud and Phong shading of a sphere mesh side by side.")
+
+    def __init__(self, state=None):
+        import ipywidgets as w
+
+        self.state = state or State()
+        s = scene(self.state)
+        # every picture is shown at its own pixel size (90 dpi): no resampling, and few pixels
+        # for ipympl to encode on each move (that encoding dominates the update time)
+        width, height = 600, 350
+        self.fig = draw.figure(figsize=(width / 90, height / 90), dpi=90)
+        ext = (-EXTENT, EXTENT, -EXTENT, EXTENT)
+        self.images = {}
+        self.axes = {}
+        top, bottom, m = 196, 24, MESH_SIZE
+        layout = {"total": (8, top), "ambient": (160, top), "diffuse": (312, top),
+                  "specular": (464, top), "flat": (60, bottom), "gouraud": (252, bottom),
+                  "phong": (444, bottom)}
+        titles = {"total": "I = sum of the terms",
+                  "ambient": "$I_e + I_g$: emission + ambient",
+                  "diffuse": "$I_d$: diffuse",
+                  "specular": "$I_s$: specular",
+                  "flat": "flat shading", "gouraud": "Gouraud shading",
+                  "phong": "Phong shading"}
+        for name, (x, y) in layout.items():
+            side = SIZE if name in ("total", "ambient", "diffuse", "specular") else m
+            ax = self.fig.add_axes((x / width, y / height, side / width, side / height))
+            ax.set(xticks=[], yticks=[])
+            for spine in ax.spines.values():
+                spine.set_visible(False)
+            ax.set_title(titles[name], fontsize=8.5 if name != "total" else 9.5, pad=3)
+            extent = ext if side == SIZE else None
+            self.images[name] = ax.imshow(s[name], origin="lower", extent=extent,
+                                          interpolation="nearest")
+            self.axes[name] = ax
+        for x, sign in ((148, "="), (300, "+"), (452, "+")):
+            self.fig.text(x / width, (top + SIZE / 2) / height, sign, fontsize=16, ha="center",
+                          va="center", color="0.3")
+        self.fig.text(0.5, (bottom + m + 26) / height,
+                      "the same model on a sphere mesh: what is interpolated?",
+                      fontsize=9, ha="center", color="0.3", style="italic")
+        big = self.axes["total"]
+        (self.sun,) = big.plot([], [], marker="*", ms=14, mec="0.2", mew=0.8, ls="none")
+        (self.peak,) = big.plot([], [], "+", color="0.2", ms=9, mew=1.2)
+        self.model_label = big.text(-1.02, -1.04, "", fontsize=8, color="0.25")
+        self.blitter = draw.Blitter(self.fig, [*self.images.values(), self.sun, self.peak,
+                                               self.model_label])
+
+        def slider(description, value, low, high, step):
+            control = w.FloatSlider(value=value, min=low, max=high, step=step,
+                                    description=description, continuous_update=True,
+                                    style={"description_width": "80px"},
+                                    layout=w.Layout(width="300px"))
+            control.observe(self._on_change, names="value")
+            return control
+
+        self.ka = slider("k_a ambient", self.state.ka, 0, 1, 0.01)
+        self.kd = slider("k_d diffuse", self.state.kd, 0, 1, 0.01)
+        self.ks = slider("k_s specular", self.state.ks, 0, 1, 0.01)
+        self.shininess = w.FloatLogSlider(value=self.state.shininess, base=2, min=0, max=9,
+                                          step=0.1, description="shininess n",
+                                          style={"description_width": "80px"},
+                                          layout=w.Layout(width="300px"))
+        self.shininess.observe(self._on_change, names="value")
+        self.emission = slider("emission", self.state.emission, 0, 1, 0.01)
+        sliders = degree_sliders(self._on_change,
+                                 azimuth=("light az. °", self.state.light_azimuth, -180, 180),
+                                 elevation=("light el. °", self.state.light_elevation, -89, 89))
+        self.azimuth, self.elevation = sliders["azimuth"], sliders["elevation"]
+        self.light_color = w.ColorPicker(value=self.state.light_color, description="light",
+                                         concise=False, layout=w.Layout(width="300px"),
+                                         style={"description_width": "80px"})
+        self.color = w.ColorPicker(value=self.state.color, description="object",
+                                   layout=w.Layout(width="300px"),
+                                   style={"description_width": "80px"})
+        self.model = w.ToggleButtons(options=MODELS, value=self.state.model,
+                                     style={"button_width": "110px"})
+        self.segments = w.IntSlider(value=self.state.segments, min=4, max=32, step=2,
+                                    description="mesh segments", continuous_update=False,
+                                    style={"description_width": "80px"},
+                                    layout=w.Layout(width="300px"))
+        for control in (self.light_color, self.color, self.model, self.segments):
+            control.observe(self._on_change, names="value")
+        self.info = w.HTML(layout=w.Layout(width="330px"))
+        column1 = w.VBox([self.ka, self.kd, self.ks, self.shininess, self.emission])
+        column2 = w.VBox([self.azimuth, self.elevation, self.light_color, self.color,
+                          self.segments])
+        self.widget = w.VBox([w.HBox([self.fig.canvas, w.VBox([self.model, self.info])],
+                                     layout=w.Layout(flex_flow="row wrap")),
+                              w.HBox([column1, column2], layout=w.Layout(flex_flow="row wrap"))])
+        self._draw(s)
+
+    def _on_change(self, change):
+        st = self.state
+        st.ka, st.kd, st.ks = self.ka.value, self.kd.value, self.ks.value
+        st.shininess, st.emission = self.shininess.value, self.emission.value
+        st.light_azimuth, st.light_elevation = self.azimuth.value, self.elevation.value
+        st.light_color, st.color = self.light_color.value, self.color.value
+        st.model, st.segments = self.model.value, self.segments.value
+        self.update()
+
+    def update(self):
+        """Recompute the scene and update the pictures in place."""
+        self._draw(scene(self.state))
+        self.blitter.update()
+
+    def _draw(self, s):
+        for name, image in self.images.items():
+            image.set_data(s[name])
+        lx, ly, lz = s["light"]
+        self.sun.set_data([lx], [ly])
+        self.sun.set_markerfacecolor("#ffd54f" if lz >= 0 else "none")
+        if s["highlight"] is not None and s["raw"].specular.max() > 0:
+            self.peak.set_data([s["highlight"][0]], [s["highlight"][1]])
+        else:
+            self.peak.set_data([], [])
+        self.model_label.set_text(f"{self.state.model}, n = {self.state.shininess:.0f}")
+        self.info.value = (s["text"] + " <i>Star: the point where N = L, straight towards the light "
+                           "(hollow: the light is behind the sphere); cross: where N = H, the "
+                           "centre of the highlight.</i>")

@@ -1,0 +1,447 @@
+"""Tests of the chapter 12 exercises (course_lib.exercises.ch12).
+
+For every exercise and many seeds: the statement reads, the right answer is accepted (also
+rounded to 3 decimals and as a plain list), placeholders are "unanswered", garbage is "invalid",
+and every anticipated mistake, rebuilt here from the question's attributes, is named by its
+diagnosis. The right answers are computed here independently of the checkers, from the formulas
+typed out below with plain numpy (never with course_lib.shading, which the checkers call): the
+mirror vector, Lambert's law, the Phong and Blinn-Phong terms, the attenuation polynomial; the
+ambient occlusion next to a wall or in a trench is integrated numerically with scipy's ``quad``
+over the azimuth, not taken from its closed form.
+"""
+import functools
+import math
+import re
+
+import numpy as np
+import pytest
+from scipy.integrate import quad
+
+from course_lib.exercises import ch12
+from course_lib.exercises.core import gap
+
+SEEDS = range(200)
+#: A mistake must be diagnosed in at least this many of the seeds (else the test is vacuous).
+MIN_DIAGNOSED = 10
+#: Answers closer than this are "the same".
+SAME = 1e-9
+
+
+class Either(list):
+    """Several values a slip may give: each one is diagnosed as that slip."""
+
+
+# ---------------------------------------------------------------------------------------------
+# Independent formulas
+# ---------------------------------------------------------------------------------------------
+
+def unit(v):
+    v = np.asarray(v, dtype=float)
+    return v / math.sqrt(float(v @ v))
+
+
+def mirror(L, N):
+    """R = 2 (N.L) N - L for a unit N."""
+    return 2 * float(N @ L) * N - L
+
+
+def lambert(kd, Il, cos):
+    return kd * Il * max(cos, 0.0)
+
+
+def reflection_vector(ex):
+    N, L = np.asarray(ex.N, float), np.asarray(ex.L, float)
+    n = unit(N)
+    right = mirror(L, n)
+    assert abs(np.linalg.norm(right) - 1) < 1e-12 and abs(n @ right - n @ L) < 1e-12
+    return right, {
+        "incoming formula": -right,
+        "N not normalised": 2 * float(N @ L) * N - L,
+        "projection only": float(n @ L) * n,
+        "plus L": 2 * float(n @ L) * n + L,
+    }
+
+
+def diffuse_term(ex):
+    kd, Il = ex.kd, ex.Il
+    if ex.kind == "angle":
+        t = ex.theta_deg * math.pi / 180
+        right = lambert(kd, Il, math.cos(t))
+        mistakes = {"degrees": kd * Il * math.cos(ex.theta_deg),
+                    "sine": kd * Il * math.sin(t)}
+        if math.cos(t) < 0:
+            mistakes["no clamp"] = kd * Il * math.cos(t)
+        return right, mistakes
+    d = np.asarray(ex.Q, float) - np.asarray(ex.P, float)
+    dist = math.sqrt(float(d @ d))
+    cos = float(ex.N @ d) / dist
+    right = lambert(kd, Il, cos)
+    mistakes = {"L reversed": lambert(kd, Il, -cos)}
+    if cos > 0:
+        mistakes["L not normalised"] = kd * Il * float(ex.N @ d)
+    else:
+        mistakes["no clamp"] = Either([kd * Il * cos, kd * Il * float(ex.N @ d)])
+    return right, mistakes
+
+
+def specular_term(ex):
+    N, L, V, ks, Il, n = ex.N, ex.L, ex.V, ex.ks, ex.Il, ex.n
+    rv = float(mirror(L, N) @ V)
+    right = ks * Il * max(rv, 0.0) ** n
+    mistakes = {
+        "N·L instead of R·V": ks * Il * max(float(N @ L), 0.0) ** n,
+        "no exponent": ks * Il * max(rv, 0.0),
+        "exponent on the coefficient": Either([Il * (ks * max(rv, 0)) ** n,
+                                               (ks * Il * max(rv, 0)) ** n]),
+    }
+    if rv < 0:
+        mistakes["no clamp"] = ks * Il * rv ** n
+    return right, mistakes
+
+
+def phong_total(ex):
+    nl = float(ex.N @ ex.L)
+    rv = float(mirror(ex.L, ex.N) @ ex.V)
+    amb = ex.Ia * ex.ka
+    light = 0.0 if nl <= 0 else ex.Il * (ex.kd * nl + ex.ks * max(rv, 0.0) ** ex.n)
+    right = ex.Ie + amb + light
+    mistakes = {"no ambient": right - amb, "no emission": right - ex.Ie,
+                "ka forgotten": ex.Ie + ex.Ia + light}
+    if nl < 0 or rv < 0:
+        mistakes["no clamp"] = ex.Ie + amb + ex.Il * (ex.kd * nl + ex.ks * rv ** ex.n)
+    if nl < 0:
+        mistakes["specular on the dark side"] = ex.Ie + amb + ex.Il * ex.ks * max(rv, 0) ** ex.n
+    return right, mistakes
+
+
+def blinn_phong(ex):
+    N, L, V, n = ex.N, ex.L, ex.V, ex.n
+    bisector = L + V
+    H = bisector / math.sqrt(float(bisector @ bisector))
+    # H bisects the angle: the same angle to L and to V
+    assert abs(float(H @ L) - float(H @ V)) < 1e-12
+    s = max(float(N @ H), 0.0) ** n
+    right = np.array([*H, s])
+    d = unit(L - V)
+    return right, {
+        "H not normalised": Either([[*bisector, s], [*(bisector / 2), s],
+                                    [*H, float(N @ bisector) ** n],
+                                    [*H, float(N @ bisector / 2) ** n]]),
+        "Phong's R·V": [*H, max(float(mirror(L, N) @ V), 0.0) ** n],
+        "L - V": Either([[*d, s], [*-d, s]]
+                        + [[*H, float(N @ (k * d)) ** n] for k in (1, -1)
+                           if float(N @ (k * d)) > 0]),
+    }
+
+
+def attenuation(ex):
+    diff = np.asarray(ex.Q, float) - np.asarray(ex.P, float)
+    d2 = float(diff @ diff)
+    d = math.sqrt(d2)
+    a, b, c, Il = ex.a, ex.b, ex.c, ex.Il
+    return Il / (a + b * d + c * d2), {
+        "1/d": Il / d, "inverse square only": Il / d2, "d not squared": Il / (a + b * d + c * d),
+        "c squared": Il / (a + b * d + c * c * d2),
+        "squared distance as d": Il / (a + b * d2 + c * d2 * d2),
+        "multiplied": Il * (a + b * d + c * d2),
+    }
+
+
+def several_lights(ex):
+    cos = np.array([float(L @ ex.N) for L in ex.Ls])
+    Is = np.asarray(ex.Is, float)
+    amb = ex.Ia * ex.ka
+    lit = [I * max(c, 0.0) for I, c in zip(Is, cos)]
+    right = amb + ex.kd * sum(lit)
+    mistakes = {"ambient per light": len(Is) * amb + ex.kd * sum(lit),
+                "averaged": amb + ex.kd * sum(lit) / len(Is),
+                "one light only": amb + ex.kd * lit[0]}
+    if np.any(Is != 1):
+        mistakes["intensities ignored"] = amb + ex.kd * sum(max(c, 0.0) for c in cos)
+    if np.any(cos < 0):
+        mistakes["no clamp"] = amb + ex.kd * float(Is @ cos)
+    return right, mistakes
+
+
+#: Which method each situation asks for, recognised by a phrase of its text.
+SITUATIONS = {"**middle** of one large triangle": "phong",
+              "flickers": "gouraud",
+              "only at the **vertices**": "gouraud",
+              "gemstone": "flat",
+              "most evaluations": "phong",
+              "single uniform colour": "flat"}
+
+
+def shading_method(ex):
+    found = [method for phrase, method in SITUATIONS.items() if phrase in ex.situation]
+    assert len(found) == 1, ex.situation
+    right = found[0]
+    return right, {f"chose {m}": m for m in ("flat", "gouraud", "phong") if m != right}
+
+
+def in_plane(deg):
+    t = deg * math.pi / 180
+    return np.array([math.sin(t), 0.0, math.cos(t)])
+
+
+def gouraud_phong(ex):
+    L, V = in_plane(ex.l_deg), in_plane(ex.v_deg)
+
+    def intensity(N):
+        nl = float(N @ L)
+        if nl <= 0:
+            return 0.0
+        return ex.kd * nl + ex.ks * max(float((2 * nl * N - L) @ V), 0.0) ** ex.n
+
+    NA, NB = in_plane(ex.a_deg), in_plane(ex.b_deg)
+    g = (intensity(NA) + intensity(NB)) / 2
+    p = intensity(in_plane((ex.a_deg + ex.b_deg) / 2))   # the renormalised mean: the mid angle
+    return np.array([g, p]), {
+        "normals interpolated": [p, p],
+        "colours interpolated": [g, g],
+        "not renormalised": [g, intensity((NA + NB) / 2)],
+    }
+
+
+def ao_samples(ex):
+    hits, cos = np.asarray(ex.hits, float), np.asarray(ex.cos_theta, float)
+    open_ = [1.0 if (math.isinf(h) or h > ex.D) else 0.0 for h in hits]
+    right = sum(open_) / len(open_)
+    return right, {
+        "occlusion instead of visibility": 1 - right,
+        "cosine twice": Either([float(np.dot(open_, cos) / cos.sum()),
+                                float(np.dot(open_, cos) / len(cos))]),
+        "maximum distance ignored": float(np.mean(np.isinf(hits))),
+        "divided by pi": right / math.pi,
+    }
+
+
+def blocked_by_one_wall(a, h):
+    """The cosine-weighted fraction of the hemisphere a wall at distance a, height h blocks.
+
+    For the azimuth phi (0 = straight at the wall) a direction hits the wall when its angle
+    from the normal exceeds theta0 = atan(a / (h cos phi)); integrating cos(theta) sin(theta)
+    from theta0 to pi/2 gives cos^2(theta0) / 2, and the azimuth is integrated numerically.
+    """
+    def across(phi):
+        c = math.cos(phi)
+        return (h * c) ** 2 / ((h * c) ** 2 + a * a) / 2
+
+    value, _ = quad(across, -math.pi / 2, math.pi / 2, epsabs=1e-13)
+    return value / math.pi
+
+
+def ao_wall(ex):
+    walls = 1 if ex.kind == "wall" else 2
+    right = 1 - walls * blocked_by_one_wall(ex.a, ex.h)
+    mistakes = {
+        "occlusion instead of visibility": 1 - right,
+        "a and h swapped": 1 - walls * blocked_by_one_wall(ex.h, ex.a),
+        "angles, not cosine-weighted": 1 - walls * math.atan2(ex.h, ex.a) / math.pi,
+    }
+    if walls == 1:
+        mistakes["two walls"] = 1 - 2 * blocked_by_one_wall(ex.a, ex.h)
+    else:
+        mistakes["one wall"] = 1 - blocked_by_one_wall(ex.a, ex.h)
+    return right, mistakes
+
+
+NUMBER_GARBAGE = ["I", {"I": 1}, [1, 2], [[1], [2, 3]], [math.nan], math.inf]
+VECTOR_GARBAGE = ["R", {"R": 1}, [[1, 2], [3]], [1, 2], np.eye(3), [math.nan, 0, 0]]
+FOUR_GARBAGE = ["H", {"h": 1}, [1, 2, 3], [[1, 2], [3, 4]], [1, 2, 3, math.nan], [1] * 5]
+PAIR_GARBAGE = ["g", {"g": 1}, [1], [1, 2, 3], [[1, 2]], [math.nan, 1]]
+METHOD_GARBAGE = ["toon", 3, ["phong"], {"phong": 1}, "wireframe", 0.5]
+
+# class name: (independent answer and mistakes, answer form)
+SPECS = {
+    "ReflectionVector": (reflection_vector, "vector"),
+    "DiffuseTerm": (diffuse_term, "number"),
+    "SpecularTerm": (specular_term, "number"),
+    "PhongTotal": (phong_total, "number"),
+    "BlinnPhongHighlight": (blinn_phong, "four"),
+    "DistanceAttenuation": (attenuation, "number"),
+    "SeveralLights": (several_lights, "number"),
+    "ShadingMethodChoice": (shading_method, "method"),
+    "GouraudVersusPhong": (gouraud_phong, "pair"),
+    "AmbientOcclusionSamples": (ao_samples, "number"),
+    "AmbientOcclusionWall": (ao_wall, "number"),
+}
+GARBAGE = {"number": NUMBER_GARBAGE, "vector": VECTOR_GARBAGE, "four": FOUR_GARBAGE,
+           "pair": PAIR_GARBAGE, "method": METHOD_GARBAGE}
+
+
+@functools.lru_cache(maxsize=None)
+def _variants(name):
+    cls = getattr(ch12, name)
+    return tuple(cls(seed=seed) for seed in SEEDS)
+
+
+def exercises(name, seeds=SEEDS):
+    variants = _variants(name)
+    return [variants[seed] for seed in seeds]
+
+
+def same(a, b, form):
+    if form == "method":
+        return a == b
+    return gap(a, b) < SAME
+
+
+# ---------------------------------------------------------------------------------------------
+# Tests
+# ---------------------------------------------------------------------------------------------
+
+def test_exercise_list():
+    assert len(ch12.EXERCISES) >= 8
+    assert len(set(ch12.EXERCISES)) == len(ch12.EXERCISES)
+    assert {cls.__name__ for cls in ch12.EXERCISES} == set(SPECS)
+
+
+@pytest.mark.parametrize("cls", ch12.EXERCISES, ids=lambda cls: cls.__name__)
+def test_docstring_has_examples(cls):
+    doc = cls.__doc__ or ""
+    assert doc.strip() and "Examples\n    --------" in doc and ">>>" in doc
+    assert cls.title and cls.title != "Exercise"
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_statement_reads(name):
+    for ex in exercises(name):
+        text = ex.statement()
+        assert isinstance(text, str) and len(text) > 80
+        assert not re.search(r"\b(nan|inf)\b", re.sub(r"`inf`", "", text.lower()))
+        assert "\\n" not in re.sub(r"\\neq?\b|\\normal", "", text)      # no escaped newlines
+        assert "**Answer:**" in text
+        assert ex._repr_markdown_().startswith(f"**{ex.title}**")
+    cls = getattr(ch12, name)
+    assert cls(seed=5).statement() == cls(seed=5).statement()        # a seed is reproducible
+    assert len({ex.statement() for ex in exercises(name, range(30))}) >= 5   # seeds differ
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_right_answer_is_accepted(name):
+    solve, form = SPECS[name]
+    for ex in exercises(name):
+        right, _ = solve(ex)
+        if form == "method":
+            answers = [right, right.upper(), f"{right.capitalize()} shading "]
+        else:
+            answers = [right, np.round(right, 3), np.asarray(right).tolist()]
+        for answer in answers:
+            fb = ex.check(answer)
+            assert fb.status == "correct", (ex, answer, fb)
+            assert bool(fb)
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_placeholders_are_unanswered(name):
+    for ex in exercises(name, range(20)):
+        for placeholder in (..., None):
+            fb = ex.check(placeholder)
+            assert fb.status == "unanswered" and not fb
+            assert "`...`" in fb.message
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_garbage_is_invalid(name):
+    _, form = SPECS[name]
+    for ex in exercises(name, range(20)):
+        for garbage in GARBAGE[form]:
+            fb = ex.check(garbage)
+            assert fb.status == "invalid", (ex, garbage, fb)
+            assert fb.message
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_mistakes_are_diagnosed(name):
+    solve, form = SPECS[name]
+    diagnosed = {}
+    for ex in exercises(name):
+        right, mistakes = solve(ex)
+        for key, values in mistakes.items():
+            for value in (values if isinstance(values, Either) else [values]):
+                fb = ex.check(value)
+                if same(value, right, form):     # in this variant the slip gives the right answer
+                    assert fb.status == "correct", (ex, key, fb)
+                    continue
+                assert fb.status == "wrong", (ex, key, value, fb)
+                assert fb.diagnosis == key, (ex, key, value, fb.diagnosis, fb.message)
+                assert len(fb.message) > 40
+                diagnosed[key] = diagnosed.get(key, 0) + 1
+    keys = set().union(*(solve(ex)[1] for ex in exercises(name)))
+    for key in keys:
+        assert diagnosed.get(key, 0) >= MIN_DIAGNOSED, (key, diagnosed)
+
+
+def test_wrong_answers_get_teaching_feedback():
+    """An answer no slip explains still says how to get it right."""
+    for name in ("ReflectionVector", "DiffuseTerm", "SpecularTerm", "PhongTotal",
+                 "DistanceAttenuation", "SeveralLights", "AmbientOcclusionWall"):
+        solve, _ = SPECS[name]
+        for ex in exercises(name, range(20)):
+            right, _ = solve(ex)
+            fb = ex.check(np.asarray(right) + 0.37)
+            assert fb.status == "wrong" and len(fb.message) > 80, (ex, fb)
+            assert fb.message.count("$") >= 2            # the formula is spelt out
+
+
+def test_numbers_are_nice_for_hand_work():
+    def rational(v, denominators=(1, 3, 5, 7, 10)):
+        return any(np.allclose(np.asarray(v) * q, np.round(np.asarray(v) * q)) for q in
+                   denominators)
+
+    for name in ("SpecularTerm", "PhongTotal", "BlinnPhongHighlight", "SeveralLights"):
+        for ex in exercises(name):
+            vectors = [ex.N] + ([*ex.Ls] if name == "SeveralLights" else [ex.L, ex.V])
+            for v in vectors:
+                assert abs(np.linalg.norm(v) - 1) < 1e-12 and rational(v), (name, v)
+    for ex in exercises("ReflectionVector"):
+        assert np.all(ex.N == np.round(ex.N))
+        length = np.linalg.norm(ex.N)
+        assert length == round(length) and length > 1
+    for ex in exercises("DistanceAttenuation"):
+        d = np.linalg.norm(ex.Q - ex.P)
+        assert d == round(d)
+    for ex in exercises("GouraudVersusPhong"):
+        for deg in (ex.a_deg, ex.b_deg, ex.l_deg, ex.v_deg):
+            assert deg % 15 == 0
+    for ex in exercises("DiffuseTerm"):
+        if ex.kind == "angle":
+            assert ex.theta_deg % 15 == 0
+
+
+def test_gouraud_misses_the_highlight_that_phong_finds():
+    for ex in exercises("GouraudVersusPhong"):
+        g, p = gouraud_phong(ex)[0]
+        assert p > g + 0.05
+
+
+def test_wall_integral_matches_the_flat_floor_limits():
+    # no wall (height 0) blocks nothing; an infinitely high wall at distance 0 blocks half
+    assert blocked_by_one_wall(1.0, 1e-9) < 1e-12
+    assert abs(blocked_by_one_wall(1e-9, 1.0) - 0.5) < 1e-6
+    # and a Monte Carlo estimate with cosine-weighted directions agrees with the integral
+    rng = np.random.default_rng(1)
+    r, phi = np.sqrt(rng.random(400_000)), 2 * np.pi * rng.random(400_000)
+    x, z = r * np.cos(phi), np.sqrt(1 - r * r)
+    a, h = 3.0, 4.0
+    with np.errstate(divide="ignore"):
+        blocked = (x > 0) & (a * z / np.where(x > 0, x, 1) < h)
+    assert abs(blocked.mean() - blocked_by_one_wall(a, h)) < 3e-3
+
+
+def test_every_situation_is_asked():
+    asked = {ex.situation for ex in exercises("ShadingMethodChoice")}
+    assert len(asked) == len(SITUATIONS)
+    assert {shading_method(ex)[0] for ex in exercises("ShadingMethodChoice")} == \
+        {"flat", "gouraud", "phong"}
+
+
+def test_checks_never_raise_on_odd_input():
+    odd = [object(), [None, None, None], {1, 2, 3}, b"bytes", 1j, [[[]]], -1, True, [],
+           [object()], np.array([]), {"a"}]
+    for cls in ch12.EXERCISES:
+        ex = cls(seed=3)
+        for answer in odd:
+            fb = ex.check(answer)
+            assert fb.status in ("invalid", "wrong", "unanswered"), (cls, answer, fb)
