@@ -1,0 +1,279 @@
+r"""Ray tracer explorer: Whitted's scene re-rendered as you change depth, shadows, materials and
+the camera.
+
+The scene is the classic one of :func:`course_lib.raytracing.example_scene` ("spheres"): a red
+diffuse sphere, a mirror sphere and a glass sphere on a checkered floor, one point light.
+Sliders set the recursion depth (0 is ray casting with shadow rays), switch the shadow rays
+off, change the mirror's reflectivity :math:`k_r`, the glass's transparency :math:`k_t` and
+refractive index, the floor's reflectivity, and move the camera on a sphere around the scene
+(azimuth, elevation, distance).
+
+A full ray-traced image takes most of a second in numpy, far too slow to follow a slider. So
+while a slider moves, the explorer renders a **low-resolution preview** (:data:`PREVIEW`
+pixels, 1/16 of the rays, well under 100 ms), shown with big square pixels; once the slider
+has been still for :data:`SETTLE_SECONDS` the **full image** (:data:`FULL`) replaces it. The
+picture is shown as an image widget (like :mod:`course_lib.widgets.surface`), so it needs no
+matplotlib canvas and costs one PNG encoding per update.
+"""
+import asyncio
+import io
+import time
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from .. import raytracing as rt
+from ._base import Explorer
+
+__all__ = ["FULL", "PREVIEW", "RayTracerExplorer", "State", "TARGET", "build_scene",
+           "make_camera", "scene"]
+
+PREVIEW = (80, 60)          # width, height of the preview while a slider moves
+FULL = (320, 240)           # width, height of the full image
+DISPLAY_WIDTH = 480         # pixels on screen
+SETTLE_SECONDS = 0.35       # a slider still this long counts as released
+TARGET = np.array([0.0, 0.8, -0.2])
+"""The point the camera orbits around and looks at (between the three spheres)."""
+FOV_DEG = 45.0
+
+
+@dataclass
+class State:
+    """Everything the picture depends on (camera angles in degrees).
+
+    Examples
+    --------
+    >>> State().max_depth, State().shadows
+    (3, True)
+    """
+
+    max_depth: int = 3
+    shadows: bool = True
+    mirror_reflectivity: float = 0.85
+    glass_transparency: float = 0.95
+    glass_ior: float = 1.5
+    floor_reflectivity: float = 0.2
+    azimuth: float = 0.0
+    elevation: float = 7.0
+    distance: float = 6.3
+
+
+def build_scene(state):
+    """The example scene ``"spheres"`` with the state's materials (objects ``[floor, red,
+    mirror, glass]``).
+
+    Examples
+    --------
+    >>> s = build_scene(State(glass_ior=1.33, mirror_reflectivity=0.5))
+    >>> s.objects[3].material.ior, s.objects[2].material.reflectivity
+    (1.33, 0.5)
+    """
+    base = rt.example_scene("spheres")
+    floor, red, mirror, glass = base.objects
+    kr = state.floor_reflectivity
+    floor = rt.Plane(floor.point, floor.normal,
+                     rt.Material(floor.material.phong, reflectivity=kr),
+                     checker=rt.Material(floor.checker.phong, reflectivity=kr),
+                     checker_size=floor.checker_size)
+    mirror = rt.Sphere(mirror.center, mirror.radius,
+                       replace(mirror.material, reflectivity=state.mirror_reflectivity))
+    glass = rt.Sphere(glass.center, glass.radius,
+                      replace(glass.material, transparency=state.glass_transparency,
+                              ior=state.glass_ior))
+    return rt.Scene([floor, red, mirror, glass], base.lights, base.ambient, base.background)
+
+
+def make_camera(state, width, height):
+    r"""The camera on a sphere around :data:`TARGET`, looking at it.
+
+    .. math:: e = T + \rho\,(\cos\varepsilon \sin\alpha,\ \sin\varepsilon,\
+              \cos\varepsilon \cos\alpha)
+
+    with azimuth :math:`\alpha` about the vertical y axis (0: in front, on +z) and elevation
+    :math:`\varepsilon` above the horizontal plane through the target.
+
+    Examples
+    --------
+    >>> cam = make_camera(State(azimuth=90, elevation=0, distance=5), 32, 24)
+    >>> np.round(cam.eye, 12).tolist()
+    [5.0, 0.8, -0.2]
+    """
+    a, e = np.radians([state.azimuth, state.elevation])
+    eye = TARGET + state.distance * np.array([np.cos(e) * np.sin(a), np.sin(e),
+                                              np.cos(e) * np.cos(a)])
+    return rt.Camera(eye, TARGET - eye, [0.0, 1.0, 0.0], np.radians(FOV_DEG), width, height)
+
+
+def scene(state, preview=False):
+    """Pure part: the rendered image and what it cost.
+
+    Parameters
+    ----------
+    state : State
+    preview : bool
+        Render at :data:`PREVIEW` instead of :data:`FULL` resolution.
+
+    Returns
+    -------
+    dict
+        ``image`` (height, width, 3) in [0, 1], row 0 at the bottom; ``counts``
+        (:class:`course_lib.raytracing.RayCounts`); ``camera``; ``preview``; ``text``.
+
+    Examples
+    --------
+    >>> s = scene(State(max_depth=0), preview=True)
+    >>> s["image"].shape, s["counts"].reflected
+    ((60, 80, 3), 0)
+    """
+    width, height = PREVIEW if preview else FULL
+    camera = make_camera(state, width, height)
+    image, counts = rt.render(build_scene(state), camera, max_depth=state.max_depth,
+                              shadows=state.shadows, return_counts=True)
+    depth = state.max_depth
+    if depth == 0:
+        what = ("Depth 0: ray casting with shadow rays — the mirror and the glass show only "
+                "their own (dark) local colour.")
+    else:
+        what = (f"Depth {depth}: up to {depth} bounce{'s' if depth > 1 else ''} after the "
+                f"primary ray; mirror-in-mirror paths longer than that come out black.")
+    text = (f"<b>{'Preview' if preview else 'Full image'} {width}×{height}</b>: "
+            f"{counts.primary:,} primary, {counts.shadow:,} shadow, {counts.reflected:,} "
+            f"reflected and {counts.refracted:,} refracted rays ({counts.total:,} in all). "
+            + what
+            + ("" if state.shadows else " Shadow rays off: every light reaches every point, "
+               "so the shadows vanish and the floor under the spheres is lit."))
+    return {"image": image, "counts": counts, "camera": camera, "preview": preview,
+            "text": text}
+
+
+def _png(image, scale=1):
+    """PNG bytes of an image stored row 0 at the bottom, each pixel `scale` x `scale`."""
+    from PIL import Image
+
+    pixels = np.flipud(np.round(image * 255).astype(np.uint8))
+    if scale > 1:
+        pixels = np.repeat(np.repeat(pixels, scale, axis=0), scale, axis=1)
+    buffer = io.BytesIO()
+    Image.fromarray(pixels).save(buffer, format="png", compress_level=1)
+    return buffer.getvalue()
+
+
+class RayTracerExplorer(Explorer):
+    """Sliders for recursion depth, shadows, materials and camera; a preview while sliding and
+    the full ray-traced image when the slider rests.
+
+    In a live kernel the full image is rendered :data:`SETTLE_SECONDS` after the last change
+    (on the kernel's event loop). Without a running event loop (a script, a test) the full
+    image waits for :meth:`settle` (or the "render full image" button).
+
+    Examples
+    --------
+    >>> explorer = RayTracerExplorer()
+    >>> explorer.depth.value = 1                    # a student's slider move
+    >>> explorer.current["image"].shape, explorer.pending
+    ((60, 80, 3), True)
+    >>> explorer.settle()
+    >>> explorer.current["image"].shape, explorer.pending
+    ((240, 320, 3), False)
+    """
+
+    summary = ("Ray tracer explorer (interactive): Whitted's spheres — recursion depth, shadow "
+               "rays on/off, mirror k_r, glass k_t and refractive index, floor k_r, camera "
+               "orbit; a low-resolution preview while sliding, the full image on release.")
+
+    def __init__(self, state=None, settle_seconds=SETTLE_SECONDS):
+        import ipywidgets as w
+
+        self.state = state or State()
+        self.settle_seconds = settle_seconds
+        self.pending = False
+        self._timer = None
+        self.last_ms = 0.0
+        self.image = w.Image(format="png", layout=w.Layout(width=f"{DISPLAY_WIDTH}px"))
+        style = {"description_width": "110px"}
+        layout = w.Layout(width="340px")
+
+        def slider(cls, description, value, low, high, step, **kwargs):
+            control = cls(value=value, min=low, max=high, step=step, description=description,
+                          continuous_update=True, style=style, layout=layout, **kwargs)
+            control.observe(self._on_change, names="value")
+            return control
+
+        st = self.state
+        self.depth = slider(w.IntSlider, "recursion depth", st.max_depth, 0, 6, 1)
+        self.shadows = w.Checkbox(value=st.shadows, description="shadow rays", indent=False)
+        self.shadows.observe(self._on_change, names="value")
+        self.mirror = slider(w.FloatSlider, "mirror k_r", st.mirror_reflectivity, 0, 1, 0.05)
+        self.glass = slider(w.FloatSlider, "glass k_t", st.glass_transparency, 0, 1, 0.05)
+        self.ior = slider(w.FloatSlider, "glass index η", st.glass_ior, 1.0, 2.5, 0.01)
+        self.floor = slider(w.FloatSlider, "floor k_r", st.floor_reflectivity, 0, 1, 0.05)
+        self.azimuth = slider(w.FloatSlider, "camera az. °", st.azimuth, -180, 180, 2)
+        self.elevation = slider(w.FloatSlider, "camera el. °", st.elevation, 2, 70, 1)
+        self.distance = slider(w.FloatSlider, "camera distance", st.distance, 3.0, 12.0, 0.1)
+        self.full_button = w.Button(description="render full image", icon="image")
+        self.full_button.on_click(lambda _: self.settle())
+        self.status = w.HTML()
+        self.info = w.HTML(layout=w.Layout(width=f"{DISPLAY_WIDTH}px"))
+        controls = w.VBox([self.depth, self.shadows, self.mirror, self.glass, self.ior,
+                           self.floor, self.azimuth, self.elevation, self.distance,
+                           self.full_button, self.status])
+        self.widget = w.VBox([w.HBox([self.image, controls],
+                                     layout=w.Layout(flex_flow="row wrap",
+                                                     align_items="center")),
+                              self.info])
+        self.current = None
+        self._render(preview=False)
+
+    def _read_controls(self):
+        st = self.state
+        st.max_depth, st.shadows = self.depth.value, self.shadows.value
+        st.mirror_reflectivity, st.floor_reflectivity = self.mirror.value, self.floor.value
+        st.glass_ior = self.ior.value
+        # k_r + k_t <= 1 for the glass (its own k_r is 0), always true on [0, 1]
+        st.glass_transparency = self.glass.value
+        st.azimuth, st.elevation = self.azimuth.value, self.elevation.value
+        st.distance = self.distance.value
+
+    def _on_change(self, change):
+        self._read_controls()
+        self.update()
+
+    def update(self):
+        """A slider moved: show the preview now, and the full image once the slider rests."""
+        self._render(preview=True)
+        self.pending = True
+        self._schedule_full()
+
+    def _schedule_full(self):
+        if self._timer is not None:
+            self._timer.cancel()
+            self._timer = None
+        try:
+            loop = asyncio.get_running_loop()
+        except RuntimeError:            # no event loop (a script or a test): wait for settle()
+            return
+        self._timer = loop.call_later(self.settle_seconds, self.settle)
+
+    def settle(self):
+        """Render the full image now (what happens when the slider has come to rest)."""
+        if self._timer is not None:
+            self._timer.cancel()
+            self._timer = None
+        self._render(preview=False)
+        self.pending = False
+
+    def _render(self, preview):
+        start = time.perf_counter()
+        s = scene(self.state, preview)
+        scale = FULL[0] // PREVIEW[0] if preview else 1
+        self.image.value = _png(s["image"], scale)
+        self.last_ms = 1e3 * (time.perf_counter() - start)
+        self.current = s
+        self.info.value = s["text"]
+        self.status.value = (f"<i>preview {PREVIEW[0]}×{PREVIEW[1]} in {self.last_ms:.0f} ms — "
+                             "the full image follows when the slider rests</i>" if preview else
+                             f"<i>full image {FULL[0]}×{FULL[1]}</i>")
+
+    def png(self, dpi=None):
+        """The current picture as PNG bytes (for readers without a kernel)."""
+        return self.image.value

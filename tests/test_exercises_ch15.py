@@ -1,0 +1,300 @@
+"""Tests of the chapter 15 exercises (course_lib.exercises.ch15).
+
+For every exercise and many seeds: the statement reads, the right answer is accepted,
+placeholders are "unanswered", garbage is "invalid", and every anticipated mistake, rebuilt here
+from the question's attributes, is named by its diagnosis. The right answers are computed here
+independently of the checkers: numpy's polynomial roots (ray-sphere), a linear solve (ray-
+triangle), PyGLM's GLSL ``reflect`` and ``refract``, the closest point of a segment to a ball
+(shadow rays), an explicit enumeration of the ray tree, a halving loop for the BVH, and formulas
+typed out below; never with the course_lib.raytracing function the checker calls.
+"""
+import functools
+import math
+import re
+
+import numpy as np
+import pytest
+from pyglm import glm
+
+from course_lib.exercises import ch15
+from course_lib.exercises.core import APART
+
+SEEDS = range(200)
+#: A mistake must be diagnosed in at least this many of the seeds (else the test is vacuous).
+MIN_DIAGNOSED = 10
+SAME = 1e-9
+
+
+def gap(a, b):
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    if a.shape != b.shape:
+        return math.inf
+    return float(np.abs(a - b).max())
+
+
+# ---------------------------------------------------------------------------------------------
+# Per exercise: the expected answer and the anticipated mistakes, from the attributes
+# ---------------------------------------------------------------------------------------------
+
+def ray_sphere_hit(ex):
+    o, d, c, r = ex.o, ex.d, ex.center, ex.radius
+    f = o - c
+    roots = np.sort(np.roots([d @ d, 2 * d @ f, f @ f - r * r]).real)
+    right = o + roots[0] * d
+    mistakes = {"far root": o + roots[1] * d, "sign of b": o - roots[1] * d}
+    unit = np.roots([1.0, 2 * d @ f, f @ f - r * r])
+    if np.isreal(unit).all():
+        mistakes["a = 1"] = o + np.min(unit.real) * d
+    return right, mistakes
+
+
+def ray_triangle_hit(ex):
+    v0, v1, v2 = ex.V
+    t, u, v = np.linalg.solve(np.column_stack([ex.d, v0 - v1, v0 - v2]), v0 - ex.o)
+    right = np.array([t, u, v])
+    return right, {"distance": np.array([t * np.linalg.norm(ex.d), u, v]),
+                   "u and v swapped": np.array([t, v, u]),
+                   "weight of v0": np.array([t, 1 - u - v, v])}
+
+
+def reflected_ray(ex):
+    n = ex.n / np.linalg.norm(ex.n)
+    right = np.array(glm.reflect(glm.dvec3(*ex.d), glm.dvec3(*n)))
+    return right, {"Phong formula": -right,
+                   "n not normalized": ex.d - 2 * (ex.d @ ex.n) * ex.n,
+                   "factor 2": ex.d - (ex.d @ n) * n}
+
+
+def refracted_ray(ex):
+    right = np.array(glm.refract(glm.dvec3(*ex.d), glm.dvec3(*ex.n), ex.eta1 / ex.eta2))
+    mistakes = {"reflected": np.array(glm.reflect(glm.dvec3(*ex.d), glm.dvec3(*ex.n))),
+                "not bent": ex.d}
+    upside = np.array(glm.refract(glm.dvec3(*ex.d), glm.dvec3(*ex.n), ex.eta2 / ex.eta1))
+    if upside.any():
+        mistakes["ratio upside down"] = upside
+    return right, mistakes
+
+
+def critical_angle(ex):
+    ratio = ex.eta2 / ex.eta1
+    return math.degrees(math.asin(ratio)), {"arccos": 90 - math.degrees(math.asin(ratio)),
+                                            "Brewster": math.degrees(math.atan(ratio)),
+                                            "radians": math.asin(ratio)}
+
+
+def schlick_reflectance(ex):
+    r = (ex.eta2 - ex.eta1) / (ex.eta2 + ex.eta1)
+    grazing = (1 - math.cos(math.radians(ex.angle))) ** 5
+    right = r * r + (1 - r * r) * grazing
+    mistakes = {"R0 not squared": abs(r) + (1 - abs(r)) * grazing, "R0 only": r * r}
+    if abs(r * r + grazing - right) >= APART:
+        mistakes["no (1 - R0)"] = r * r + grazing
+    return right, mistakes
+
+
+def shadow_ray(ex):
+    p, q, c = ex.P, ex.light, ex.center
+    s = np.clip((c - p) @ (q - p) / ((q - p) @ (q - p)), 0, 1)      # closest point of segment
+    blocked = np.linalg.norm(p + s * (q - p) - c) < ex.radius
+    assert blocked == ex.blocked
+    cos = (q - p)[1] / np.linalg.norm(q - p)
+    lit = ex.ka + ex.kd * cos
+    mistakes = {"no ambient": 0.0,
+                "L not normalized": ex.ka + ex.kd * (q - p)[1]}
+    if blocked:
+        mistakes["ignored the shadow"] = lit
+    else:
+        mistakes["false shadow"] = ex.ka
+    return (ex.ka if blocked else lit), mistakes
+
+
+def chain(local, kr, depth, multiply=True):
+    def colour(k, weight):
+        if k > depth:
+            return 0.0
+        nxt = weight * kr[k] if multiply else kr[k]
+        return weight * local[k] + colour(k + 1, nxt)
+    return colour(0, 1.0)
+
+
+def mirror_chain_colour(ex):
+    return chain(ex.local, ex.kr, ex.depth), {
+        "no weights": sum(ex.local[:ex.depth + 1]),
+        "weights not multiplied": chain(ex.local, ex.kr, ex.depth, multiply=False),
+        "one too deep": chain(ex.local, ex.kr, ex.depth + 1),
+        "one too shallow": chain(ex.local, ex.kr, ex.depth - 1)}
+
+
+def tree_nodes(depth, children):
+    level, total = [0], 0
+    while level:
+        total += len(level)
+        level = [k + 1 for k in level if k < depth for _ in range(children)]
+    return total
+
+
+def ray_tree_count(ex):
+    nodes = tree_nodes(ex.depth, 2 if ex.glass else 1)
+    right = np.array([nodes, nodes * ex.lights], dtype=float)
+    mistakes = {"primary forgotten": [nodes - 1, nodes * ex.lights],
+                "shadows of primary only": [nodes, ex.lights],
+                "one per hit": [nodes, nodes]}
+    if ex.glass:
+        mistakes["last level only"] = [2 ** ex.depth, nodes * ex.lights]
+        mistakes["chain"] = [tree_nodes(ex.depth, 1), nodes * ex.lights]
+    else:
+        mistakes["binary tree"] = [tree_nodes(ex.depth, 2), nodes * ex.lights]
+    return right, {k: np.array(v, dtype=float) for k, v in mistakes.items()}
+
+
+def bvh_savings(ex):
+    depth, count = 0, ex.triangles
+    while count > ex.leaf_size:
+        count //= 2
+        depth += 1
+    boxes = 2 * depth
+    right = np.array([depth, boxes, ex.leaf_size, ex.triangles / (boxes + ex.leaf_size)])
+    return right, {"leaf size ignored": np.r_[math.log2(ex.triangles), right[1:]],
+                   "one box per level": np.r_[right[0], depth, right[2:]],
+                   "brute force": np.r_[right[:2], ex.triangles, right[3]],
+                   "boxes free": np.r_[right[:3], ex.triangles / ex.leaf_size]}
+
+
+SPECS = {
+    "RaySphereHit": (ray_sphere_hit, "vector"),
+    "RayTriangleHit": (ray_triangle_hit, "parts"),
+    "ReflectedRay": (reflected_ray, "vector"),
+    "RefractedRay": (refracted_ray, "vector"),
+    "CriticalAngle": (critical_angle, "number"),
+    "SchlickReflectance": (schlick_reflectance, "number"),
+    "ShadowRay": (shadow_ray, "number"),
+    "MirrorChainColour": (mirror_chain_colour, "number"),
+    "RayTreeCount": (ray_tree_count, "parts"),
+    "BVHSavings": (bvh_savings, "parts"),
+}
+GARBAGE = {"vector": ["x", [1, 2], [[1, 2, 3]], [1, float("nan"), 2], {"a": 1}],
+           "number": ["x", [1, 2], [float("nan")], {"a": 1}],
+           "parts": ["x", [1], [[1, 2, 3, 4, 5]], {"a": 1}]}
+
+
+@functools.lru_cache(maxsize=None)
+def _variants(name):
+    cls = getattr(ch15, name)
+    return tuple(cls(seed=seed) for seed in SEEDS)
+
+
+def exercises(name, seeds=SEEDS):
+    variants = _variants(name)
+    return [variants[seed] for seed in seeds]
+
+
+# ---------------------------------------------------------------------------------------------
+# Tests
+# ---------------------------------------------------------------------------------------------
+
+def test_exercise_list():
+    assert len(ch15.EXERCISES) >= 8
+    assert len(set(ch15.EXERCISES)) == len(ch15.EXERCISES)
+    assert {cls.__name__ for cls in ch15.EXERCISES} == set(SPECS)
+
+
+@pytest.mark.parametrize("cls", ch15.EXERCISES, ids=lambda cls: cls.__name__)
+def test_docstring_has_examples(cls):
+    doc = cls.__doc__ or ""
+    assert doc.strip() and "Examples\n    --------" in doc and ">>>" in doc
+    assert cls.title and cls.title != "Exercise"
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_statement_reads(name):
+    for ex in exercises(name):
+        text = ex.statement()
+        assert isinstance(text, str) and len(text) > 80
+        assert not re.search(r"\b(nan|inf)\b", text.lower())
+        assert "**Answer:**" in text
+        assert ex._repr_markdown_().startswith(f"**{ex.title}**")
+    cls = getattr(ch15, name)
+    assert cls(seed=5).statement() == cls(seed=5).statement()
+    assert len({ex.statement() for ex in exercises(name, range(40))}) >= 5
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_right_answer_is_accepted(name):
+    solve, _ = SPECS[name]
+    for ex in exercises(name):
+        right, _ = solve(ex)
+        for answer in (right, np.round(right, 3), np.asarray(right).tolist()):
+            fb = ex.check(answer)
+            assert fb.status == "correct", (ex, answer, fb)
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_placeholders_are_unanswered(name):
+    for ex in exercises(name, range(20)):
+        for placeholder in (..., None):
+            fb = ex.check(placeholder)
+            assert fb.status == "unanswered" and not fb
+            assert "`...`" in fb.message
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_garbage_is_invalid(name):
+    _, form = SPECS[name]
+    for ex in exercises(name, range(20)):
+        for garbage in GARBAGE[form]:
+            fb = ex.check(garbage)
+            assert fb.status == "invalid", (ex, garbage, fb)
+            assert fb.message
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_mistakes_are_diagnosed(name):
+    solve, _ = SPECS[name]
+    diagnosed = {}
+    for ex in exercises(name):
+        right, mistakes = solve(ex)
+        for key, value in mistakes.items():
+            fb = ex.check(value)
+            if gap(value, right) < SAME:          # in this variant the slip gives the right answer
+                assert fb.status == "correct", (ex, key, fb)
+                continue
+            assert fb.status == "wrong", (ex, key, value, fb)
+            assert fb.diagnosis == key, (ex, key, value, fb.diagnosis, fb.message)
+            assert len(fb.message) > 30
+            diagnosed[key] = diagnosed.get(key, 0) + 1
+    keys = set().union(*(solve(ex)[1] for ex in exercises(name)))
+    for key in keys:
+        assert diagnosed.get(key, 0) >= MIN_DIAGNOSED, (key, diagnosed)
+
+
+def test_wrong_answers_get_teaching_feedback():
+    for name in ("RaySphereHit", "ReflectedRay", "RefractedRay", "ShadowRay", "BVHSavings"):
+        solve, _ = SPECS[name]
+        for ex in exercises(name, range(20)):
+            right, _ = solve(ex)
+            fb = ex.check(np.asarray(right) + 0.37)
+            assert fb.status == "wrong" and len(fb.message) > 60, (ex, fb)
+
+
+def test_numbers_are_nice_for_hand_work():
+    for ex in exercises("RaySphereHit"):
+        assert np.all(ex.d == np.round(ex.d)) and np.all(ex.center == np.round(ex.center))
+        assert np.all(ex.o == np.round(ex.o))
+        assert np.allclose(ex.expected, np.round(ex.expected))
+    for ex in exercises("RayTriangleHit"):
+        assert np.all(ex.V == np.round(ex.V)) and np.all(ex.expected * 8 == np.round(
+            ex.expected * 8))
+    for ex in exercises("RefractedRay"):
+        assert ex.angle % 15 == 0
+    both = {ex.blocked for ex in exercises("ShadowRay")}
+    assert both == {True, False}                  # lit and shadowed variants both occur
+
+
+def test_checks_never_raise_on_odd_input():
+    odd = [object(), [None, None, None], {1, 2, 3}, b"bytes", 1j, [[[]]], -1, True, [],
+           [object()], np.array([]), {"a"}]
+    for cls in ch15.EXERCISES:
+        ex = cls(seed=3)
+        for answer in odd:
+            fb = ex.check(answer)
+            assert fb.status in ("invalid", "wrong", "unanswered"), (cls, answer, fb)
