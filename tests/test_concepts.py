@@ -1,0 +1,674 @@
+"""Tests of the concept questions: structure, the checker, and the facts they state.
+
+The second half checks the facts that can be computed, each tied to the key of the question it
+proves, against independent libraries (numpy, scipy, shapely, trimesh, scikit-image,
+matplotlib's colour maps) or closed-form hand calculations.
+"""
+import itertools
+import math
+
+import numpy as np
+import pytest
+from scipy.interpolate import BSpline
+from scipy.spatial import ConvexHull, Delaunay
+from scipy.spatial.transform import Rotation
+
+from course_lib.exercises import concepts
+from course_lib.exercises.concepts import QUESTIONS, ConceptQuestion, questions
+from course_lib.exercises.core import UNANSWERED, Feedback
+
+CHAPTERS = (3, 4, 5, 6, 7, 10, 12, 14, 15, 18)
+ALL = questions()
+BY_KEY = {q.key: q for q in ALL}
+IDS = [q.key for q in ALL]
+
+
+def truth(key):
+    """What the question `key` claims: True/False for a true/false question."""
+    q = BY_KEY[key]
+    assert q.kind == "true/false"
+    return q.correct == 0
+
+
+def answer_text(key):
+    return BY_KEY[key].options[BY_KEY[key].correct]
+
+
+# ---------------------------------------------------------------------------------------------
+# Structure
+# ---------------------------------------------------------------------------------------------
+
+def test_every_chapter_has_at_least_eight():
+    assert tuple(sorted(QUESTIONS)) == CHAPTERS
+    for chapter in CHAPTERS:
+        assert len(QUESTIONS[chapter]) >= 8, chapter
+        assert all(q.chapter == chapter for q in QUESTIONS[chapter])
+        assert questions(chapter) == list(QUESTIONS[chapter])
+
+
+def test_keys_unique_and_stable_form():
+    assert len(BY_KEY) == len(ALL)
+    for q in ALL:
+        assert q.key.startswith(f"ch{q.chapter:02d}-"), q.key
+        assert q.key == q.key.lower() and " " not in q.key
+
+
+@pytest.mark.parametrize("q", ALL, ids=IDS)
+def test_question_well_formed(q):
+    assert q.kind in concepts.KINDS
+    assert len(q.options) == len(q.explanations) >= 2
+    assert len({o.strip().lower() for o in q.options}) == len(q.options)
+    assert all(e.strip() for e in q.explanations)
+    assert 0 <= q.correct < len(q.options)
+    if q.kind == "true/false":
+        assert q.options == ("True", "False")
+    else:
+        assert len(q.options) >= 3
+    # no option's text is also another option's letter (the forms must not clash)
+    for i, text in enumerate(q.options):
+        assert text.strip().lower() not in q.letters
+        # nor the index of another option
+        assert text.strip() not in {str(j) for j in range(len(q.options)) if j != i}
+
+
+def test_correct_positions_are_mixed():
+    for chapter in CHAPTERS:
+        mc = [q.correct for q in QUESTIONS[chapter] if q.kind == "multiple choice"]
+        assert len(set(mc)) >= 3, chapter
+    tf = [q.correct for q in ALL if q.kind == "true/false"]
+    assert 0.2 < sum(tf) / len(tf) < 0.8
+
+
+def test_questions_rejects_unknown_chapter():
+    with pytest.raises(ValueError, match="chapter"):
+        questions(8)
+    with pytest.raises(ValueError, match="chapter"):
+        questions("7")
+
+
+def test_constructor_rejects_inconsistent_fields():
+    good = dict(chapter=3, key="x", kind="multiple choice", prompt="?", options=("a1", "b1"),
+                correct=0, explanations=("e1", "e2"))
+    ConceptQuestion(**good)
+    for bad in (dict(correct=2), dict(correct=True), dict(explanations=("e1",)),
+                dict(options=("same", "Same")), dict(kind="essay"),
+                dict(kind="true/false")):
+        with pytest.raises((ValueError, TypeError)):
+            ConceptQuestion(**{**good, **bad})
+
+
+# ---------------------------------------------------------------------------------------------
+# The checker
+# ---------------------------------------------------------------------------------------------
+
+def right_forms(q):
+    i = q.correct
+    letter = q.letters[i]
+    forms = [i, np.int64(i), float(i), letter, letter.upper(), f"({letter})", f"{letter})",
+             q.options[i], q.options[i].upper(), "  " + q.options[i].lower() + " "]
+    if q.kind == "true/false":
+        word = q.options[i]
+        forms += [word == "True", np.bool_(word == "True"), word.lower(), word[0].lower(),
+                  word[0]]
+    return forms
+
+
+@pytest.mark.parametrize("q", ALL, ids=IDS)
+def test_check_accepts_every_form_of_the_right_answer(q):
+    for form in right_forms(q):
+        fb = q.check(form)
+        assert isinstance(fb, Feedback)
+        assert fb.status == "correct", (form, fb)
+        assert q.explanations[q.correct] in fb.message
+
+
+@pytest.mark.parametrize("q", ALL, ids=IDS)
+def test_check_rejects_every_wrong_option_with_its_explanation(q):
+    for i, option in enumerate(q.options):
+        if i == q.correct:
+            continue
+        for form in (i, q.letters[i], q.letters[i].upper(), option):
+            fb = q.check(form)
+            assert fb.status == "wrong" and not fb
+            assert fb.diagnosis == f"option {q.letters[i]}"
+            assert q.explanations[i] in fb.message
+            assert q.explanations[q.correct] in fb.message
+            assert fb.message.index(q.explanations[i]) < fb.message.index(
+                q.explanations[q.correct])
+
+
+def test_numeric_option_text():
+    q = BY_KEY["ch18-mc-cases"]
+    assert q.check(15) and q.check("15") and q.check(15.0)
+    assert q.check(23).diagnosis == "option d"
+    assert q.check(16).status == "invalid"
+
+
+def test_true_false_forms():
+    q = BY_KEY["ch03-quat-double-cover"]           # true
+    for form in (True, "true", "TRUE", "t", "T", "a", 0, "True"):
+        assert q.check(form).status == "correct", form
+    for form in (False, "false", "f", "F", "b", 1, "False"):
+        assert q.check(form).status == "wrong", form
+    q = BY_KEY["ch03-quat-commute"]                # false
+    assert q.check(False) and q.check("f") and q.check("false")
+    assert not q.check(True) and not q.check("t")
+
+
+@pytest.mark.parametrize("q", [QUESTIONS[7][0], QUESTIONS[4][0]], ids=lambda q: q.key)
+def test_unanswered_is_the_exercises_message(q):
+    for blank in (..., None):
+        fb = q.check(blank)
+        assert fb.status == "unanswered" and fb.message == UNANSWERED
+
+
+@pytest.mark.parametrize("q", [BY_KEY["ch05-backface-sign"], BY_KEY["ch07-bspline-degree"]],
+                         ids=lambda q: q.key)
+def test_unreadable_answers_say_what_is_accepted(q):
+    n = len(q.options)
+    for bad in ("zz", "maybe", n, -1, 1.5, [0], {"a": 1}, object(), "", b"a"):
+        fb = q.check(bad)
+        assert fb.status == "invalid", bad
+        assert "letter" in fb.message and "index" in fb.message and "text" in fb.message
+    if q.kind == "multiple choice":
+        assert q.check(True).status == "invalid"   # a bool is no option of a 4-way question
+    else:
+        assert "True" in q.check("maybe").message
+
+
+def test_display():
+    q = BY_KEY["ch04-fov"]
+    md = q._repr_markdown_()
+    assert q.prompt in md
+    for letter, option in zip("abcd", q.options):
+        assert f"**({letter})** {option}" in md
+    assert "Chapter 4" in md and q.key in md
+    assert repr(q) == "ConceptQuestion('ch04-fov')"
+
+
+def test_frozen():
+    q = ALL[0]
+    with pytest.raises(AttributeError):
+        q.correct = 0
+
+
+# ---------------------------------------------------------------------------------------------
+# The facts, verified independently (each tied to the question key it proves)
+# ---------------------------------------------------------------------------------------------
+
+RNG = np.random.default_rng(20240610)
+
+
+def random_affine(dim=2):
+    while True:
+        A = RNG.normal(size=(dim, dim))
+        if abs(np.linalg.det(A)) > 0.2:
+            return A, RNG.normal(size=dim)
+
+
+def test_fact_ch03_affine_preserves():
+    assert answer_text("ch03-affine-preserves") == "Ratios of lengths along one line"
+    length_changed = angle_changed = area_changed = 0
+    for _ in range(50):
+        A, t = random_affine()
+        a, b = RNG.normal(size=(2, 2))
+        s = RNG.uniform()
+        p = (1 - s) * a + s * b
+        fa, fb, fp = A @ a + t, A @ b + t, A @ p + t
+        # the image point divides the image segment in the same ratio
+        assert math.isclose(np.linalg.norm(fp - fa) / np.linalg.norm(fb - fa), s, rel_tol=1e-9)
+        length_changed += not math.isclose(np.linalg.norm(fb - fa), np.linalg.norm(b - a))
+        e1, e2 = A @ [1, 0], A @ [0, 1]
+        angle_changed += abs(e1 @ e2) > 1e-6
+        area_changed += not math.isclose(abs(np.linalg.det(A)), 1.0)
+    assert length_changed and angle_changed and area_changed
+
+
+def test_fact_ch03_affine_parallel():
+    assert truth("ch03-affine-parallel")
+    for _ in range(20):
+        A, t = random_affine(3)
+        d, p, q = RNG.normal(size=(3, 3))
+        d1 = (A @ (p + d) + t) - (A @ p + t)
+        d2 = (A @ (q + 2 * d) + t) - (A @ q + t)
+        assert np.allclose(np.cross(d1, d2), 0, atol=1e-9)
+
+
+def test_fact_ch03_compose_and_inverse():
+    assert not truth("ch03-compose-commute")
+    R = Rotation.from_euler("z", 0.7).as_matrix()
+    T = np.eye(4)
+    T[:3, 3] = [1, 2, 0]
+    R4 = np.eye(4)
+    R4[:3, :3] = R
+    assert not np.allclose(T @ R4, R4 @ T)
+    assert answer_text("ch03-inverse-rotation").startswith("$R^T$")
+    for R in Rotation.random(10, random_state=1).as_matrix():
+        assert np.allclose(R.T @ R, np.eye(3)) and not np.allclose(R @ R, np.eye(3))
+
+
+def test_fact_ch03_quaternions():
+    # scipy is scalar-last (x, y, z, s)
+    assert truth("ch03-quat-double-cover") and not truth("ch03-quat-commute")
+    for quat in Rotation.random(20, random_state=2).as_quat():
+        assert np.allclose(Rotation.from_quat(quat).as_matrix(),
+                           Rotation.from_quat(-quat).as_matrix())
+    a, b = Rotation.random(2, random_state=3)
+    assert not np.allclose((a * b).as_quat(), (b * a).as_quat())
+    # half angle: (cos θ/2, sin θ/2 n) is the rotation by θ about n
+    theta, n = 1.1, np.array([2.0, -1.0, 2.0]) / 3
+    assert "\\cos\\tfrac\\theta2" in answer_text("ch03-quat-half-angle")
+    q = np.r_[np.sin(theta / 2) * n, np.cos(theta / 2)]
+    assert np.allclose(Rotation.from_quat(q).as_rotvec(), theta * n)
+    # the top-left entry of the rotation matrix is 1 - 2y² - 2z², not 1 - 2y²
+    assert answer_text("ch03-quat-matrix-entry") == "$1 - 2y^2 - 2z^2$"
+    for x, y, z, s in Rotation.random(20, random_state=4).as_quat():
+        m00 = Rotation.from_quat([x, y, z, s]).as_matrix()[0, 0]
+        assert math.isclose(m00, 1 - 2 * y * y - 2 * z * z, abs_tol=1e-12)
+    x, y, z, s = Rotation.from_euler("z", 1.0).as_quat()
+    assert not math.isclose(Rotation.from_quat([x, y, z, s]).as_matrix()[0, 0], 1 - 2 * y * y)
+
+
+def perspective(points, d=1.0):
+    """Project onto the plane z = d through the origin (hand formula x d / z)."""
+    points = np.asarray(points, dtype=float)
+    return points[..., :2] * d / points[..., 2:3]
+
+
+def cross_ratio(a, b, c, d):
+    return (np.linalg.norm(c - a) * np.linalg.norm(d - b)) / (
+        np.linalg.norm(c - b) * np.linalg.norm(d - a))
+
+
+def test_fact_ch04_perspective_ratios_lines_cross_ratio():
+    assert not truth("ch04-perspective-ratios") and truth("ch04-affine-cross-ratio")
+    assert answer_text("ch04-projective-preserves").startswith("Straight lines")
+    moved = 0
+    for _ in range(30):
+        a = RNG.uniform([-1, -1, 2], [1, 1, 4])
+        b = RNG.uniform([-1, -1, 6], [1, 1, 9])
+        ts = np.array([0.0, 0.3, 0.5, 0.8, 1.0])
+        pts = a + ts[:, None] * (b - a)
+        img = perspective(pts)
+        # straight lines stay straight: all images collinear
+        assert np.linalg.matrix_rank(img[1:] - img[0], tol=1e-9) == 1
+        # the midpoint does not go to the midpoint
+        moved += not np.allclose(img[2], (img[0] + img[4]) / 2, atol=1e-6)
+        # cross ratio of four collinear points is kept
+        assert math.isclose(cross_ratio(*pts[[0, 1, 3, 4]]), cross_ratio(*img[[0, 1, 3, 4]]),
+                            rel_tol=1e-9)
+    assert moved == 30
+    # parallel lines meet at a vanishing point
+    d = np.array([1.0, 0.5, 1.0])
+    far = perspective(np.array([[0, 0, 1.0], [1, 0, 1.0]]) + 1e7 * d)
+    assert np.allclose(far[0], far[1], atol=1e-6)
+
+
+def test_fact_ch04_depth_and_fov():
+    assert not truth("ch04-perspective-depth-nonlinear")
+    n, f = 1.0, 10.0
+    ze = -np.linspace(n, f, 7)
+    # OpenGL-style depth: z_ndc = (f + n)/(f - n) + 2 f n / ((f - n) z_e)
+    zndc = (f + n) / (f - n) + 2 * f * n / ((f - n) * ze)
+    assert np.allclose(zndc[[0, -1]], [-1, 1])
+    assert np.all(np.diff(zndc) > 0)
+    assert not np.allclose(np.diff(zndc), np.diff(zndc)[0])      # not linear
+    assert answer_text("ch04-fov") == "$t = n \\tan\\tfrac\\theta2$"
+    theta = np.radians(60)
+    corner = np.array([0.0, n * np.tan(theta / 2), -n])
+    angle = np.degrees(np.arccos(corner @ [0, 0, -1] / np.linalg.norm(corner)))
+    assert math.isclose(2 * angle, 60)
+
+
+def test_fact_ch05_backface_sign_by_ray_casting():
+    import trimesh
+    assert answer_text("ch05-backface-sign") == "When $\\vec v \\cdot \\vec n > 0$"
+    mesh = trimesh.creation.icosphere(subdivisions=2)
+    eye = np.array([0.3, -0.2, 4.0])
+    centers = mesh.triangles_center
+    v = centers - eye
+    back = np.einsum("ij,ij->i", v, mesh.face_normals) > 0
+    # independent: the first face hit by the ray from the eye to each centre
+    hit = mesh.ray.intersects_first(np.repeat(eye[None], len(centers), 0),
+                                    v / np.linalg.norm(v, axis=1, keepdims=True))
+    seen = hit == np.arange(len(centers))
+    assert back.any() and (~back).any()
+    edge_on = np.abs(np.einsum("ij,ij->i", v / np.linalg.norm(v, axis=1, keepdims=True),
+                               mesh.face_normals)) < 0.05
+    assert np.array_equal(seen[~edge_on], ~back[~edge_on])
+
+
+def outcode(p, lo=(0.0, 0.0), hi=(1.0, 1.0)):
+    x, y = p
+    return (x < lo[0]) | (x > hi[0]) << 1 | (y < lo[1]) << 2 | (y > hi[1]) << 3
+
+
+def test_fact_ch05_cohen_sutherland_by_shapely():
+    from shapely.geometry import LineString, box
+    assert "reject" in answer_text("ch05-cohen-sutherland")
+    assert not truth("ch05-cs-or-nonzero")
+    window = box(0, 0, 1, 1)
+    rejected = missed_with_zero_and = 0
+    for _ in range(2000):
+        a, b = RNG.uniform(-1, 2, size=(2, 2))
+        c1, c2 = outcode(a), outcode(b)
+        hits = LineString([a, b]).intersects(window)
+        if c1 & c2:
+            rejected += 1
+            assert not hits
+        elif not hits:
+            missed_with_zero_and += 1
+        if not (c1 | c2):
+            assert window.contains(LineString([a, b]))
+    assert rejected > 100 and missed_with_zero_and > 0
+
+
+def test_fact_ch05_liang_barsky_by_shapely():
+    from shapely.geometry import LineString, box
+    assert "largest entering" in answer_text("ch05-liang-barsky")
+    window = box(0, 0, 1, 1)
+    for _ in range(500):
+        p0, p1 = RNG.uniform(-1, 2, size=(2, 2))
+        d = p1 - p0
+        tE, tL = 0.0, 1.0
+        for p, q in ((-d[0], p0[0]), (d[0], 1 - p0[0]), (-d[1], p0[1]), (d[1], 1 - p0[1])):
+            if abs(p) < 1e-15:
+                if q < 0:
+                    tE, tL = 1.0, 0.0
+                continue
+            t = q / p
+            if p < 0:
+                tE = max(tE, t)
+            else:
+                tL = min(tL, t)
+        clipped = LineString([p0, p1]).intersection(window)
+        if tE > tL:
+            assert clipped.length < 1e-9
+        else:
+            assert math.isclose(clipped.length, (tL - tE) * np.linalg.norm(d), abs_tol=1e-9)
+
+
+def test_fact_ch06_euler_and_edges():
+    import trimesh
+    assert "2 - 2g" in answer_text("ch06-euler-genus") and truth("ch06-euler-sphere")
+    assert truth("ch06-closed-triangle-count") and answer_text("ch06-manifold-edge") == \
+        "Exactly two"
+    for mesh, genus in ((trimesh.creation.icosphere(3), 0), (trimesh.creation.box(), 0),
+                        (trimesh.creation.cylinder(1, 2, sections=17), 0),
+                        (trimesh.creation.torus(2, 0.5), 1)):
+        V, E, F = len(mesh.vertices), len(mesh.edges_unique), len(mesh.faces)
+        assert mesh.is_watertight
+        assert V - E + F == 2 - 2 * genus == mesh.euler_number
+        assert 3 * F == 2 * E
+        counts = np.bincount(mesh.edges_unique_inverse, minlength=E)
+        assert np.all(counts == 2)
+
+
+def test_fact_ch06_halfedge_twin():
+    assert truth("ch06-halfedge-twin") and not truth("ch06-halfedge-nonmanifold")
+    import trimesh
+    mesh = trimesh.creation.icosphere(1)
+    halves = [(int(f[i]), int(f[(i + 1) % 3])) for f in mesh.faces for i in range(3)]
+    index = {h: k for k, h in enumerate(halves)}
+    assert len(index) == len(halves)
+    twin = np.array([index[(b, a)] for a, b in halves])
+    assert np.array_equal(twin[twin], np.arange(len(halves)))
+    # a fin: three triangles on edge (0, 1) need three halves of one edge, one too many
+    fin = [(0, 1, 2), (1, 0, 3), (0, 1, 4)]
+    fin_halves = [(f[i], f[(i + 1) % 3]) for f in fin for i in range(3)]
+    assert len(fin_halves) != len(set(fin_halves))
+
+
+def bernstein_curve(P, t):
+    n = len(P) - 1
+    t = np.asarray(t)[:, None]
+    return sum(math.comb(n, i) * t ** i * (1 - t) ** (n - i) * P[i] for i in range(n + 1))
+
+
+def test_fact_ch07_bezier_convex_hull_endpoints_tangent():
+    assert truth("ch07-bezier-convex-hull")
+    assert answer_text("ch07-bezier-endpoints") == "The first and the last"
+    assert answer_text("ch07-bezier-tangent") == "$n(P_1 - P_0)$"
+    t = np.linspace(0, 1, 201)
+    for n in range(2, 7):
+        P = RNG.normal(size=(n + 1, 2))
+        C = bernstein_curve(P, t)
+        hull = Delaunay(P[ConvexHull(P).vertices])
+        assert np.all(hull.find_simplex(C, tol=1e-9) >= 0)
+        assert np.allclose(C[0], P[0]) and np.allclose(C[-1], P[-1])
+        h = 1e-6
+        deriv = (bernstein_curve(P, [h]) - bernstein_curve(P, [0.0]))[0] / h
+        assert np.allclose(deriv, n * (P[1] - P[0]), atol=1e-4)
+
+
+def test_fact_ch07_affine_but_not_projective():
+    assert truth("ch07-bezier-affine") and not truth("ch07-bezier-projective")
+    t = np.linspace(0, 1, 11)
+    P = RNG.uniform([-1, -1, 2], [1, 1, 6], size=(4, 3))
+    A, s = random_affine(3)
+    assert np.allclose(bernstein_curve(P @ A.T + s, t), bernstein_curve(P, t) @ A.T + s)
+    assert not np.allclose(bernstein_curve(perspective(P), t),
+                           perspective(bernstein_curve(P, t)), atol=1e-3)
+    # a rational curve with weights w_i = z_i of the projected points is the projected curve
+    w = P[:, 2]
+    Q = perspective(P)
+    B = np.stack([math.comb(3, i) * t ** i * (1 - t) ** (3 - i) for i in range(4)], 1)
+    rational = (B * w) @ Q / (B @ w)[:, None]
+    assert np.allclose(rational, perspective(bernstein_curve(P, t)))
+
+
+def test_fact_ch07_bspline_degree_local_hull_continuity():
+    assert not truth("ch07-bspline-degree") and truth("ch07-bspline-strong-hull")
+    assert "p + 1" in answer_text("ch07-bspline-local")
+    assert answer_text("ch07-bspline-continuity") == "$C^{p-k}$"
+    p = 3
+    for n_ctrl in (4, 6, 9):
+        knots = np.r_[[0] * p, np.linspace(0, 1, n_ctrl - p + 1), [1] * p]
+        spline = BSpline(knots, RNG.normal(size=(n_ctrl, 2)), p)
+        assert spline.k == p                         # the degree stays p
+    n_ctrl = 8
+    knots = np.r_[[0] * p, np.linspace(0, 1, n_ctrl - p + 1), [1] * p]
+    C = RNG.normal(size=(n_ctrl, 2))
+    u = np.linspace(0, 1, 801)[:-1]
+    i = 3
+    C2 = C.copy()
+    C2[i] += [1.0, -2.0]
+    changed = np.any(np.abs(BSpline(knots, C2, p)(u) - BSpline(knots, C, p)(u)) > 1e-12,
+                     axis=1)
+    assert np.all((u[changed] >= knots[i]) & (u[changed] < knots[i + p + 1]))
+    assert changed.any()
+    # strong convex hull: the points of span [u_j, u_j+1) lie in the hull of P_{j-p..j}
+    curve = BSpline(knots, C, p)
+    for j in range(p, n_ctrl):
+        uu = np.linspace(knots[j], knots[j + 1], 30, endpoint=False)
+        hull = Delaunay(C[j - p:j + 1])
+        assert np.all(hull.find_simplex(curve(uu), tol=1e-9) >= 0)
+    # a double knot inside a cubic: C1 but not C2 there
+    knots = np.array([0, 0, 0, 0, 1, 2, 2, 3, 4, 4, 4, 4], dtype=float)
+    curve = BSpline(knots, RNG.normal(size=(len(knots) - p - 1, 2)), p)
+    eps = 1e-7
+    for order, continuous in ((0, True), (1, True), (2, False)):
+        d = curve.derivative(order) if order else curve
+        jump = np.abs(d(2 - eps) - d(2 + eps)).max()
+        assert (jump < 1e-4) == continuous
+
+
+def test_fact_ch07_rational_circle():
+    assert "rational" in answer_text("ch07-rational-circle").lower()
+    assert truth("ch07-rational-weights-one")
+    P = np.array([[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    t = np.linspace(0, 1, 101)
+    B = np.stack([(1 - t) ** 2, 2 * t * (1 - t), t ** 2], 1)
+    w = np.array([1, math.sqrt(2) / 2, 1])
+    arc = (B * w) @ P / (B @ w)[:, None]
+    assert np.allclose(np.linalg.norm(arc, axis=1), 1)
+    assert not np.allclose(np.linalg.norm(bernstein_curve(P, t), axis=1), 1, atol=1e-2)
+    # equal weights: the polynomial curve
+    w = np.full(3, 2.7)
+    assert np.allclose((B * w) @ P / (B @ w)[:, None], bernstein_curve(P, t))
+
+
+def test_fact_ch10_normalize():
+    assert answer_text("ch10-normalize").endswith("+ n_{min}$")
+    i = RNG.uniform(3, 9, 50)
+    lo, hi = 10.0, 30.0
+    out = (i - i.min()) / (i.max() - i.min()) * (hi - lo) + lo
+    assert math.isclose(out.min(), lo) and math.isclose(out.max(), hi)
+    assert np.allclose(out, np.interp(i, [i.min(), i.max()], [lo, hi]))
+
+
+def test_fact_ch10_rainbow_lightness():
+    import matplotlib
+    from skimage.color import rgb2lab
+    assert not truth("ch10-rainbow") and truth("ch10-lightness-order")
+    x = np.linspace(0, 1, 256)
+    L = {name: rgb2lab(matplotlib.colormaps[name](x)[None, :, :3])[0, :, 0]
+         for name in ("jet", "viridis")}
+    assert np.all(np.diff(L["viridis"]) > 0)
+    assert np.any(np.diff(L["jet"]) > 0.1) and np.any(np.diff(L["jet"]) < -0.1)
+
+
+def test_fact_ch12_phong_terms():
+    assert answer_text("ch12-phong-view-dependent") == "The specular term"
+    assert not truth("ch12-diffuse-view") and truth("ch12-specular-exponent")
+    n = np.array([0.0, 0.0, 1.0])
+    light = np.array([1.0, 0.0, 1.0]) / math.sqrt(2)
+    r = 2 * (n @ light) * n - light
+    views = RNG.normal(size=(50, 3))
+    views[:, 2] = np.abs(views[:, 2]) + 0.1
+    views /= np.linalg.norm(views, axis=1, keepdims=True)
+    diffuse = np.full(len(views), max(0.0, n @ light))    # no view in the formula
+    assert np.ptp(diffuse) == 0
+    spec = np.clip(views @ r, 0, None)
+    assert np.ptp(spec) > 0.1
+    # higher exponent: narrower lobe (smaller solid angle above half maximum)
+    angles = np.linspace(0, np.pi / 2, 1000)
+    widths = [angles[np.cos(angles) ** e >= 0.5].max() for e in (5, 50)]
+    assert widths[1] < widths[0]
+    # Blinn: n.h = 1 exactly when v is the mirror direction r
+    h = (light + r) / np.linalg.norm(light + r)
+    assert math.isclose(n @ h, 1.0)
+
+
+def test_fact_ch14_barycentric_and_mipmap():
+    from shapely.geometry import Polygon
+    assert truth("ch14-barycentric-sum")
+    for _ in range(20):
+        A, B, C = RNG.normal(size=(3, 2))
+        lam = RNG.dirichlet([1, 1, 1])
+        P = lam[0] * A + lam[1] * B + lam[2] * C
+        whole = Polygon([A, B, C]).area
+        areas = [Polygon([P, B, C]).area, Polygon([A, P, C]).area, Polygon([A, B, P]).area]
+        assert np.allclose(np.array(areas) / whole, lam)
+    assert "a third" in answer_text("ch14-mipmap")
+    size = 1024
+    levels = [size >> k for k in range(11)]
+    extra = sum(s * s for s in levels[1:]) / size ** 2
+    assert extra < 1 / 3 and math.isclose(extra, 1 / 3, rel_tol=1e-5)
+
+
+def test_fact_ch15_reflection_refraction_sphere():
+    assert answer_text("ch15-reflect") == "$\\vec d - 2(\\vec d \\cdot \\hat n)\\hat n$"
+    for _ in range(20):
+        n = RNG.normal(size=3)
+        n /= np.linalg.norm(n)
+        d = RNG.normal(size=3)
+        r = d - 2 * (d @ n) * n
+        assert math.isclose(np.linalg.norm(r), np.linalg.norm(d))
+        assert math.isclose(r @ n, -(d @ n))
+        # Householder reflection: the same thing as a matrix
+        assert np.allclose((np.eye(3) - 2 * np.outer(n, n)) @ d, r)
+    assert "41.8" in answer_text("ch15-tir")
+    critical = math.degrees(math.asin(1 / 1.5))
+    assert math.isclose(critical, 41.81, abs_tol=0.01)
+    for angle, refracts in ((40.0, True), (43.0, False)):
+        assert (1.5 * math.sin(math.radians(angle)) <= 1) == refracts
+    assert truth("ch15-sphere-quadratic")
+    import trimesh
+    sphere = trimesh.creation.icosphere(5)
+    for _ in range(20):
+        o = RNG.normal(size=3) * 3
+        d = RNG.normal(size=3)
+        d /= np.linalg.norm(d)
+        b = 2 * d @ o
+        c = o @ o - 1
+        disc = b * b - 4 * c
+        if abs(disc) < 0.1:
+            continue
+        hits, _, _ = sphere.ray.intersects_location([o], [d])
+        ahead = disc > 0 and (-b + math.sqrt(disc)) / 2 > 0
+        assert (len(hits) > 0) == ahead
+
+
+def test_fact_ch18_marching_squares_and_cubes_cases():
+    assert "Two" in answer_text("ch18-ms-ambiguous")
+    # corners in order around the square: ambiguous when the pattern alternates
+    ambiguous = [c for c in range(16)
+                 if all(((c >> i) & 1) != ((c >> ((i + 1) % 4)) & 1) for i in range(4))]
+    assert len(ambiguous) == 2
+    assert answer_text("ch18-mc-cases") == "15"
+    corners = np.array(list(itertools.product((0, 1), repeat=3)))
+    rotations = [R for R in Rotation.create_group("O").as_matrix()]
+    centred = corners - 0.5
+    perms = []
+    for R in rotations:
+        moved = np.rint((centred @ np.rint(R).T) + 0.5).astype(int)
+        perms.append([int(np.flatnonzero((corners == m).all(1))[0]) for m in moved])
+    assert len(perms) == 24
+
+    def classes(with_complement):
+        seen, count = set(), 0
+        for case in range(256):
+            if case in seen:
+                continue
+            count += 1
+            for perm in perms:
+                image = sum(1 << perm[i] for i in range(8) if case >> i & 1)
+                seen.add(image)
+                if with_complement:
+                    seen.add(255 ^ image)
+        return count
+    assert classes(True) == 15 and classes(False) == 23
+
+
+def test_fact_ch18_marching_squares_interpolation():
+    from skimage.measure import find_contours
+    assert answer_text("ch18-ms-interp").startswith("At $t = \\frac{c - f_0}")
+    f0, f1, c = 0.2, 1.4, 0.5
+    grid = np.array([[f0, f1], [f0, f1]])
+    contour = find_contours(grid, c)[0]
+    assert np.allclose(contour[:, 1], (c - f0) / (f1 - f0))
+
+
+def test_fact_ch18_euler_spiral_and_compositing():
+    from scipy.integrate import solve_ivp
+    assert "outward" in answer_text("ch18-euler-integration")
+    h, p = 0.1, np.array([1.0, 0.0])
+    for k in range(1, 21):
+        p = p + h * np.array([-p[1], p[0]])
+        assert math.isclose(np.linalg.norm(p), (1 + h * h) ** (k / 2))
+    rk = solve_ivp(lambda t, y: [-y[1], y[0]], (0, 2.0), [1.0, 0.0], method="RK45",
+                   rtol=1e-9, atol=1e-12)
+    assert math.isclose(np.linalg.norm(rk.y[:, -1]), 1.0, rel_tol=1e-6)
+    # front-to-back and back-to-front compositing agree
+    assert "early ray termination" in answer_text("ch18-front-to-back")
+    colours, alphas = RNG.uniform(size=(30, 3)), RNG.uniform(0, 0.5, size=30)
+    back = np.zeros(3)
+    for col, a in zip(colours[::-1], alphas[::-1]):
+        back = a * col + (1 - a) * back
+    front, acc = np.zeros(3), 0.0
+    for col, a in zip(colours, alphas):
+        front += (1 - acc) * a * col
+        acc += (1 - acc) * a
+    assert np.allclose(front, back)
+
+
+def test_fact_ch18_marching_cubes_sphere_is_closed_manifold():
+    import trimesh
+    from skimage.measure import marching_cubes
+    assert truth("ch18-mc-holes")          # the table can make holes: here it does not
+    g = np.linspace(-1.3, 1.3, 28)
+    x, y, z = np.meshgrid(g, g, g, indexing="ij")
+    verts, faces, _, _ = marching_cubes(x ** 2 + y ** 2 + z ** 2, 1.0)
+    mesh = trimesh.Trimesh(verts, faces)
+    assert mesh.is_watertight and mesh.euler_number == 2
