@@ -16,7 +16,7 @@ PYTEST_ARGS ?=
 # JupyterLab refuses to run as root unless told (containers, some lab machines)
 LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
-.PHONY: lab lecture test system-packages exercises notebooks benchmarks clean
+.PHONY: lab lecture screenshots test system-packages exercises notebooks benchmarks clean
 
 lab: $(STAMP)
 	@scripts/system-packages --warn-only --no-browser
@@ -37,6 +37,16 @@ $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
+
+# the README's screenshots, taken by the end-to-end browser tests
+screenshots: $(STAMP)
+	@scripts/system-packages
+	$(BIN)/python -m pytest -o addopts="" -p no:cacheprovider tests/browser/test_interactions.py tests/browser/test_lecture.py
+	cp test-artifacts/browser/quaternion-explorer-widget.png docs/screenshots/quaternion-explorer.png
+	cp test-artifacts/browser/bezier-editor-widget.png docs/screenshots/bezier-editor.png
+	cp test-artifacts/browser/transfer-function-widget.png docs/screenshots/transfer-function-editor.png
+	cp test-artifacts/browser/cohen-sutherland-widget.png docs/screenshots/cohen-sutherland.png
+	cp test-artifacts/browser/lecture-slide-1.png docs/screenshots/lecture-slide.png
 
 exercises: $(STAMP)
 	$(BIN)/python -m course_lib.exercises.build

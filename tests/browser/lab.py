@@ -34,8 +34,9 @@ def free_port():
 class LabServer:
     """A JupyterLab server on a free loopback port, with its own config and settings."""
 
-    def __init__(self, tmp):
+    def __init__(self, tmp, env=None):
         self.tmp = Path(tmp)
+        self.extra_env = dict(env or {})
         self.port = free_port()
         self.token = "course-test-token"
         self.url = f"http://127.0.0.1:{self.port}"
@@ -62,6 +63,7 @@ class LabServer:
         docmanager.mkdir(parents=True, exist_ok=True)
         (docmanager / "plugin.jupyterlab-settings").write_text(json.dumps({"autosave": False}))
         env["JUPYTERLAB_SETTINGS_DIR"] = str(self.tmp / "lab-settings")
+        env.update(self.extra_env)
         env["JUPYTERLAB_WORKSPACES_DIR"] = str(self.tmp / "workspaces")
         return env
 

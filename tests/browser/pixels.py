@@ -17,3 +17,17 @@ def changed_pixels(before, after, threshold=24):
         height, width = min(a.shape[0], b.shape[0]), min(a.shape[1], b.shape[1])
         a, b = a[:height, :width], b[:height, :width]
     return int((np.abs(a - b).max(axis=-1) > threshold).sum())
+
+
+def changed_pixels_in(before, after, top, bottom, threshold=24):
+    """Changed pixels between the heights `top` and `bottom` (fractions of the image, 0 = top)."""
+    a, b = load(before), load(after)
+    height = min(a.shape[0], b.shape[0])
+    rows = slice(int(top * height), int(bottom * height))
+    return changed_pixels(_png(a[rows]), _png(b[rows]), threshold)
+
+
+def _png(array):
+    buffer = io.BytesIO()
+    Image.fromarray(array.astype(np.uint8)).save(buffer, format="png")
+    return buffer.getvalue()

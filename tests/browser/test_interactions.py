@@ -6,7 +6,7 @@ import pytest
 
 from .lab import (NotebookPage, data_to_canvas_fraction, drag_on_canvas, figure_canvas,
                   press_slider, widget_view)
-from .pixels import changed_pixels
+from .pixels import changed_pixels, changed_pixels_in
 
 MIN_CHANGED = 400            # pixels: redrawing a curve or a shape changes thousands
 
@@ -78,4 +78,32 @@ def test_clipping_visualizer_steps_back_and_the_clipped_segment_changes(open_not
     assert changed_pixels(before, after) > MIN_CHANGED // 4   # the segment is one clip longer
     text = view.locator(".widget-html").last.inner_text()
     assert "clip" not in text or "moves to the intersection" in text
+    assert notebook.log_console_count() == 0 and notebook.console_errors == []
+
+
+def test_transfer_function_point_dragged_up_changes_the_rendered_images(open_notebook):
+    notebook = open_notebook("notebooks/ch10_visualization_principles.ipynb")
+    view = widget_view(notebook, 0)                     # the transfer-function editor
+    canvas = figure_canvas(view)
+    readout = view.locator(".widget-slider:has-text('opacity α') .widget-readout").first
+    point = view.locator(".widget-slider:has-text('point') .widget-readout").first
+    before_opacity = float(readout.inner_text())
+    before = notebook.screenshot("transfer-function-before", canvas).read_bytes()
+    # widgets/transfer_function.py: the opacity axes span figure fractions x 0.07..0.98,
+    # y 0.1439..0.4377 with limits x -0.015..1.015, y -0.04..1.06; the "skin" preset's point 6
+    # sits at (0.8, 0.3)
+    layout = dict(xlim=(-0.015, 1.015), ylim=(-0.04, 1.06), left=0.07, right=0.98,
+                  bottom=0.1439, top=0.1439 + 0.2938)
+    start = data_to_canvas_fraction(0.8, 0.3, **layout)
+    end = data_to_canvas_fraction(0.8, 0.75, **layout)
+    drag_on_canvas(canvas, start, end)
+    view.page.wait_for_timeout(2500)                   # the full ray cast after the drop
+    after = notebook.screenshot("transfer-function-after", canvas).read_bytes()
+    notebook.screenshot("transfer-function-widget", view)
+    # the 2D field and the volume rendering (the top half of the figure) were re-rendered
+    assert changed_pixels_in(before, after, 0.0, 0.5) > MIN_CHANGED
+    assert before_opacity == pytest.approx(0.3, abs=0.01)   # the preset's point 6
+    assert point.inner_text().strip() == "6"            # the dragged point is selected
+    after_opacity = float(readout.inner_text())
+    assert 0.6 < after_opacity < 0.9, after_opacity     # where the mouse let go (0.75)
     assert notebook.log_console_count() == 0 and notebook.console_errors == []
