@@ -20,13 +20,13 @@ LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
 lab: $(STAMP)
 	@scripts/system-packages --warn-only --no-browser
-	$(BIN)/jupyter lab --ServerApp.root_dir=. --LabApp.default_url=/lab/tree/notebooks $(LAB_ARGS)
+	$(BIN)/jupyter lab --ServerApp.root_dir=. --LabApp.default_url=/lab/tree/notebooks/00_start_here.ipynb $(LAB_ARGS)
 
 # lecture mode: figures drawn 1.5 times larger for a projector (SCALE=1.8 for more); present a
 # lesson as slides with the deck button of the notebook toolbar (see the README)
 lecture: $(STAMP)
 	@scripts/system-packages --warn-only --no-browser
-	COURSE_LECTURE=$(or $(SCALE),1) $(BIN)/jupyter lab --ServerApp.root_dir=. --LabApp.default_url=/lab/tree/notebooks $(LAB_ARGS)
+	COURSE_LECTURE=$(or $(SCALE),1) $(BIN)/jupyter lab --ServerApp.root_dir=. --LabApp.default_url=/lab/tree/notebooks/00_start_here.ipynb $(LAB_ARGS)
 
 test: $(STAMP)
 	@scripts/system-packages

@@ -1,5 +1,6 @@
 """Test-wide set-up: headless rendering and a matplotlib backend like the students'."""
 import os
+import tempfile
 
 import matplotlib
 import pytest
@@ -11,6 +12,9 @@ from course_lib.draw import configure_offscreen_vtk
 matplotlib.use("module://ipympl.backend_nbagg")
 configure_offscreen_vtk()            # before anything imports vtk (also inherited by kernels)
 os.environ.setdefault("PYDEVD_DISABLE_FILE_VALIDATION", "1")   # quiet kernel start-up
+# the mock exam's progress file: never the student's real one (kernels and servers inherit this)
+os.environ["COURSE_PROGRESS_FILE"] = os.path.join(
+    tempfile.mkdtemp(prefix="course-progress-"), "progress.json")
 
 
 @pytest.fixture(autouse=True)

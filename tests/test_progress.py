@@ -1,0 +1,249 @@
+"""Tests of course_lib.progress: where the file lives, atomic writes that survive a crash
+midway, corrupt and foreign files reported and set aside (never overwritten), and the
+summaries (weakest chapters computed by hand here)."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+import warnings
+from datetime import datetime, timezone
+from pathlib import Path
+
+import pytest
+
+from course_lib import progress
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(autouse=True)
+def _private_home(tmp_path, monkeypatch):
+    """Nothing here may touch the real home: HOME, the data folder and the file are tmp."""
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    monkeypatch.setenv("XDG_DATA_HOME", str(tmp_path / "data"))
+    monkeypatch.setenv(progress.ENV_VAR, str(tmp_path / "progress.json"))
+
+
+def record(seed=1, **score):
+    """An exam record; `score` as ch3=(right, total), ..."""
+    scores = {k[2:]: list(v) for k, v in score.items()} or {"3": [1, 2]}
+    return {"seed": seed, "chapters": sorted(int(k) for k in scores),
+            "n_questions": sum(t for _, t in scores.values()), "score": scores,
+            "revisit": [{"chapter": 3, "key": "ch03.ComposeMatrix2D", "seed": 12,
+                         "label": "Chapter 3: Compose (variant 12)"}]}
+
+
+# --- where the file lives --------------------------------------------------------------------
+
+def test_path_argument_then_environment_then_data_folder(tmp_path, monkeypatch):
+    assert progress.progress_path(tmp_path / "a.json") == (tmp_path / "a.json").resolve()
+    assert progress.progress_path() == (tmp_path / "progress.json").resolve()
+    monkeypatch.delenv(progress.ENV_VAR)
+    monkeypatch.setattr(sys, "platform", "linux")
+    assert progress.progress_path() == (tmp_path / "data" / "graphics-course" /
+                                        "progress.json").resolve()
+    monkeypatch.delenv("XDG_DATA_HOME")
+    assert progress.progress_path() == (tmp_path / "home" / ".local" / "share" /
+                                        "graphics-course" / "progress.json").resolve()
+    monkeypatch.setattr(sys, "platform", "darwin")
+    assert progress.progress_path().parent.parent.name == "Application Support"
+
+
+def test_a_file_inside_the_repository_is_refused(monkeypatch):
+    with pytest.raises(ValueError, match="path .* inside the course repository"):
+        progress.progress_path(ROOT / "progress.json")
+    monkeypatch.setenv(progress.ENV_VAR, str(ROOT / "notebooks" / "p.json"))
+    with pytest.raises(ValueError, match="COURSE_PROGRESS_FILE .* inside the course repo"):
+        progress.read_history()
+    with pytest.raises(TypeError, match="path must be a file path"):
+        progress.progress_path(42)
+
+
+# --- recording and reading -------------------------------------------------------------------
+
+def test_record_and_read_back(tmp_path):
+    file = tmp_path / "progress.json"
+    assert progress.read_history() == [] and not file.exists()   # reading creates nothing
+    when = datetime(2026, 5, 4, 3, 2, 1, tzinfo=timezone.utc)
+    stored = progress.record_exam(record(1, ch3=(1, 2), ch7=(0, 1)), when=when)
+    progress.record_exam(record(2, ch5=(2, 2)))
+    data = json.loads(file.read_text())
+    assert (data["format"], data["version"]) == ("graphics-course-progress", 1)
+    assert [e["seed"] for e in data["exams"]] == [1, 2]
+    assert stored["date"] == "2026-05-04T03:02:01+00:00" == data["exams"][0]["date"]
+    assert progress.read_history() == data["exams"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["progress.json"]   # no temp left
+
+
+def test_an_exam_object_is_recorded(tmp_path):
+    from course_lib.exercises import mock_exam
+
+    exam = mock_exam(3, chapters=[3, 7], n_questions=4)
+    exam.submit(0, exam[0].source.letters[exam[0].source.correct]
+                if exam[0].kind == "concept" else repr(exam[0].source.expected.tolist()))
+    for i in range(1, 4):
+        exam.submit(i, "")
+    stored = progress.record_exam(exam)
+    assert stored["score"] == {"3": [1, 2], "7": [0, 2]}
+    assert len(stored["revisit"]) == 3
+
+
+@pytest.mark.parametrize("bad, error", [
+    ("not a record", TypeError),
+    ({"seed": 1}, ValueError),
+    ({**record(), "score": {"3": [3, 2]}}, ValueError),        # more right than asked
+    ({**record(), "seed": object()}, TypeError),               # not JSON
+])
+def test_bad_records_are_refused_and_nothing_is_written(tmp_path, bad, error):
+    with pytest.raises(error, match="result"):
+        progress.record_exam(bad)
+    assert not (tmp_path / "progress.json").exists()
+
+
+# --- interrupted writes ----------------------------------------------------------------------
+
+def test_a_failing_replace_leaves_the_old_file_intact(tmp_path, monkeypatch):
+    file = tmp_path / "progress.json"
+    progress.record_exam(record(1))
+    before = file.read_bytes()
+
+    def crash(*args, **kwargs):
+        raise OSError("disk full (simulated)")
+
+    monkeypatch.setattr(progress.os, "replace", crash)
+    with pytest.raises(OSError, match="simulated"):
+        progress.record_exam(record(2))
+    monkeypatch.undo()
+    assert file.read_bytes() == before
+    assert [e["seed"] for e in progress.read_history(file)] == [1]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["progress.json"]   # temp removed
+
+
+def test_a_write_failing_halfway_leaves_the_old_file_intact(tmp_path, monkeypatch):
+    file = tmp_path / "progress.json"
+    progress.record_exam(record(1))
+    before = file.read_bytes()
+    real_dump = json.dump
+
+    def half_dump(obj, handle, **kwargs):
+        text = json.dumps(obj, **kwargs)
+        handle.write(text[: len(text) // 2])                  # half the new file, then crash
+        raise KeyboardInterrupt("kernel interrupted (simulated)")
+
+    monkeypatch.setattr(progress.json, "dump", half_dump)
+    with pytest.raises(KeyboardInterrupt):
+        progress.record_exam(record(2))
+    monkeypatch.setattr(progress.json, "dump", real_dump)
+    assert file.read_bytes() == before
+    assert [e["seed"] for e in progress.read_history(file)] == [1]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["progress.json"]
+
+
+def test_a_process_killed_mid_write_leaves_the_old_file_intact(tmp_path):
+    """A real crash: the writer is killed (SIGKILL, no clean-up) while its new content sits
+    half-written in the temporary file."""
+    file = tmp_path / "progress.json"
+    progress.record_exam(record(1))
+    before = file.read_bytes()
+    started = tmp_path / "started"
+    script = textwrap.dedent(f"""
+        import json, os, time
+        from course_lib import progress
+
+        def slow_dump(obj, handle, **kwargs):
+            text = json.dumps(obj, **kwargs)
+            handle.write(text[: len(text) // 2])
+            handle.flush()
+            os.fsync(handle.fileno())
+            open({str(started)!r}, "w").close()
+            time.sleep(60)                                # killed here
+            handle.write(text[len(text) // 2:])
+
+        progress.json.dump = slow_dump
+        progress.record_exam({record(2)!r}, path={str(file)!r})
+    """)
+    proc = subprocess.Popen([sys.executable, "-c", script], cwd=tmp_path,
+                            env={**os.environ, "PYTHONPATH": str(ROOT)})
+    try:
+        for _ in range(600):
+            if started.exists() or proc.poll() is not None:
+                break
+            time.sleep(0.05)
+        assert started.exists(), "the writer never reached the middle of its write"
+        temporaries = [p for p in tmp_path.iterdir() if p.name.endswith(".tmp")]
+        assert len(temporaries) == 1 and temporaries[0].stat().st_size > 0
+    finally:
+        proc.send_signal(signal.SIGKILL)
+        proc.wait(timeout=30)
+    assert proc.returncode == -signal.SIGKILL
+    assert file.read_bytes() == before
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")                        # no corruption reported
+        assert [e["seed"] for e in progress.read_history(file)] == [1]
+    progress.record_exam(record(3), path=file)                 # and the next write works
+    assert [e["seed"] for e in progress.read_history(file)] == [1, 3]
+
+
+# --- corrupt and foreign files ---------------------------------------------------------------
+
+@pytest.mark.parametrize("content, reason", [
+    (b'{"format": "graphics-course-progress", "version": 1, "exams": [', "not valid JSON"),
+    (b"\xff\xfe garbage", "not valid JSON"),
+    (b"", "not valid JSON"),
+    (b'{"theme": "dark"}', "is not a 'graphics-course-progress' file"),
+    (b"[1, 2, 3]", "is not a 'graphics-course-progress' file"),
+    (b'{"format": "graphics-course-progress", "version": 2, "exams": []}', "version 2"),
+    (b'{"format": "graphics-course-progress", "version": 1, "exams": {}}', "not a list"),
+    (b'{"format": "graphics-course-progress", "version": 1, "exams": [{"seed": 1}]}',
+     "lacks a valid"),
+])
+def test_corrupt_or_foreign_files_are_reported_and_set_aside(tmp_path, content, reason):
+    file = tmp_path / "progress.json"
+    file.write_bytes(content)
+    with pytest.warns(progress.ProgressFileWarning, match=reason) as caught:
+        assert progress.read_history() == []
+    aside = list(tmp_path.glob("progress.json.corrupt-*"))
+    assert len(aside) == 1 and aside[0].read_bytes() == content     # kept, byte for byte
+    assert str(aside[0]) in str(caught[0].message) and not file.exists()
+    progress.record_exam(record(5))                                  # a fresh file starts
+    assert [e["seed"] for e in progress.read_history()] == [5]
+    assert aside[0].read_bytes() == content
+
+
+def test_two_corrupt_files_in_the_same_second_both_survive(tmp_path):
+    file = tmp_path / "progress.json"
+    for text in ("first", "second"):
+        file.write_text(text)
+        with pytest.warns(progress.ProgressFileWarning):
+            progress.read_history()
+    assert sorted(p.read_text() for p in tmp_path.glob("progress.json.corrupt-*")) == [
+        "first", "second"]
+
+
+# --- summaries -------------------------------------------------------------------------------
+
+def test_chapter_scores_and_weakest_chapters_by_hand():
+    history = [record(1, ch3=(1, 2), ch5=(0, 1), ch7=(2, 2)),
+               record(2, ch3=(1, 2), ch10=(1, 4), ch12=(1, 2))]
+    assert progress.chapter_scores(history) == {3: (2, 4), 5: (0, 1), 7: (2, 2), 10: (1, 4),
+                                                12: (1, 2)}
+    # shares: ch5 0, ch10 0.25, ch3 0.5 (4 asked) before ch12 0.5 (2 asked); ch7 is perfect
+    weakest = progress.weakest_chapters(history, n=4)
+    assert [w["chapter"] for w in weakest] == [5, 10, 3, 12]
+    assert [w["share"] for w in weakest] == [0.0, 0.25, 0.5, 0.5]
+    assert [w["chapter"] for w in progress.weakest_chapters(history, n=2)] == [5, 10]
+    with pytest.raises(ValueError, match="n must be"):
+        progress.weakest_chapters(history, n=0)
+
+
+def test_weakest_chapters_read_from_the_file_and_the_report():
+    assert progress.weakest_chapters() == []
+    assert progress.progress_report().startswith("**No results yet.**")
+    progress.record_exam(record(1, ch4=(0, 2), ch6=(1, 1)))
+    assert [w["chapter"] for w in progress.weakest_chapters()] == [4]
+    report = progress.progress_report()
+    assert "1 mock exam taken" in report and "| 4 | 0 | 2 | 0% |" in report
+    assert "chapter 4 (0 of 2 right)" in report and "Chapter 3: Compose (variant 12)" in report
