@@ -111,6 +111,8 @@ def launch_browser(playwright, profile):
 class NotebookPage:
     """One notebook open in JupyterLab: run it, find its widgets, read its errors."""
 
+    opened = 0
+
     def __init__(self, context, server, path):
         self.page = context.new_page()
         self.console_errors = []
@@ -124,7 +126,12 @@ class NotebookPage:
 
         On a cold server the kernel specs may arrive after the notebook opens; JupyterLab then
         asks which kernel to start (a "Select Kernel" dialog): accept the proposed one."""
-        self.page.goto(f"{self.server.url}/lab/tree/{self.path}?token={self.server.token}&reset")
+        # a workspace of its own for every page: no layout restored from an earlier test, and no
+        # "?reset" (which reloads the page after a moment, destroying what a test is reading)
+        NotebookPage.opened += 1
+        workspace = f"test-{os.getpid()}-{NotebookPage.opened}"
+        self.page.goto(f"{self.server.url}/lab/workspaces/{workspace}/tree/{self.path}"
+                       f"?token={self.server.token}")
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             dialog = self.page.locator(".jp-Dialog:has-text('Select Kernel') .jp-mod-accept")
