@@ -7,6 +7,9 @@ import pytest
 
 from course_lib.draw import configure_offscreen_vtk
 
+# the shared checks of tests/test_exercises_chNN.py: show pytest's detailed assertion messages
+pytest.register_assert_rewrite("exercise_harness")
+
 # The ipympl backend, as under `%matplotlib widget`: it works without a browser, and setting a
 # widget's value runs the same callbacks a student's drag runs.
 matplotlib.use("module://ipympl.backend_nbagg")

@@ -7,7 +7,6 @@ placeholders are "unanswered", garbage is "invalid", and every anticipated mista
 from the question's attributes, is named by its diagnosis. Nothing is copied from the checker's
 output.
 """
-import functools
 import math
 
 import numpy as np
@@ -15,10 +14,8 @@ import pytest
 from scipy.spatial.transform import Rotation, Slerp
 
 from course_lib.exercises import ch03
-
-SEEDS = range(200)
-#: A mistake must be diagnosed in at least this many of the seeds (else the test is vacuous).
-MIN_DIAGNOSED = 10
+import exercise_harness as harness
+from exercise_harness import MIN_DIAGNOSED
 
 
 # ---------------------------------------------------------------------------------------------
@@ -331,16 +328,7 @@ GARBAGE = {"matrix": MATRIX_GARBAGE, "vector": VECTOR_GARBAGE, "number": NUMBER_
            "quaternion": QUATERNION_GARBAGE, "axis-angle": AXIS_ANGLE_GARBAGE}
 
 
-@functools.lru_cache(maxsize=None)
-def _variants(name):
-    cls = getattr(ch03, name)
-    return tuple(cls(seed=seed) for seed in SEEDS)
-
-
-def exercises(name, seeds=SEEDS):
-    """The variants of exercise `name` for `seeds` (built once: checking does not change them)."""
-    variants = _variants(name)
-    return [variants[seed] for seed in seeds]
+exercises = harness.variants(ch03)
 
 
 def rounded(answer, decimals=3):
@@ -353,30 +341,9 @@ def rounded(answer, decimals=3):
 # Tests
 # ---------------------------------------------------------------------------------------------
 
-def test_exercise_list():
-    assert len(ch03.EXERCISES) >= 10
-    assert len(set(ch03.EXERCISES)) == len(ch03.EXERCISES)
-    assert {cls.__name__ for cls in ch03.EXERCISES} == set(SPECS)
-
-
-@pytest.mark.parametrize("cls", ch03.EXERCISES, ids=lambda cls: cls.__name__)
-def test_docstring_has_examples(cls):
-    doc = cls.__doc__ or ""
-    assert doc.strip() and "Examples\n    --------" in doc and ">>>" in doc
-    assert cls.title and cls.title != "Exercise"
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_statement_reads(name):
-    for ex in exercises(name):
-        text = ex.statement()
-        assert isinstance(text, str) and len(text) > 80
-        assert "nan" not in text.lower() and "inf" not in text.replace("infinity", "").lower()
-        assert "\\n" not in text.replace("\\neq", "")           # no escaped newlines
-        assert "**Answer:**" in text
-        assert ex._repr_markdown_().startswith(f"**{ex.title}**")
-    cls = getattr(ch03, name)
-    assert cls(seed=5).statement() == cls(seed=5).statement()       # a seed is reproducible
+globals().update(harness.common_tests(
+    ch03, SPECS, GARBAGE, exercises, at_least=10, distinct=None, words=r"nan|inf",
+    clean=lambda text: text.replace("infinity", "").lower(), newlines=r"\\neq", odd=None))
 
 
 @pytest.mark.parametrize("name", SPECS)
@@ -415,25 +382,6 @@ def test_homogeneous_4x4_rotation_is_accepted():
         big = np.eye(4)
         big[:3, :3] = right
         assert ex.check(big).status == "correct"
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_placeholders_are_unanswered(name):
-    for ex in exercises(name, range(20)):
-        for placeholder in (..., None):
-            fb = ex.check(placeholder)
-            assert fb.status == "unanswered" and not fb
-            assert "`...`" in fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_garbage_is_invalid(name):
-    _, form = SPECS[name]
-    for ex in exercises(name, range(20)):
-        for garbage in GARBAGE[form]:
-            fb = ex.check(garbage)
-            assert fb.status == "invalid", (ex, garbage, fb)
-            assert fb.message
 
 
 @pytest.mark.parametrize("name", SPECS)

@@ -6,22 +6,20 @@ single precision, or closed forms typed out below, never the course_lib function
 calls) is accepted, placeholders are "unanswered", garbage is "invalid", and every anticipated
 mistake, rebuilt here from the question's attributes, is named by its diagnosis.
 """
-import functools
 import math
 
 import numpy as np
 import pytest
 
 from course_lib.exercises import ch04
+import exercise_harness as harness
+from exercise_harness import MIN_DIAGNOSED
 
 try:
     from pyglm import glm            # PyGLM >= 2.8 (plain `import glm` is being deprecated)
 except ImportError:                  # pragma: no cover - older PyGLM
     import glm
 
-SEEDS = range(200)
-#: A mistake must be diagnosed in at least this many of the seeds (else the test is vacuous).
-MIN_DIAGNOSED = 10
 #: PyGLM computes in single precision: values closer than this are "the same".
 SAME = 1e-5
 
@@ -320,47 +318,16 @@ GARBAGE = {"matrix": MATRIX_GARBAGE, "projective": MATRIX_GARBAGE, "point": POIN
            "number": NUMBER_GARBAGE, "four": FOUR_GARBAGE}
 
 
-@functools.lru_cache(maxsize=None)
-def _variants(name):
-    cls = getattr(ch04, name)
-    return tuple(cls(seed=seed) for seed in SEEDS)
-
-
-def exercises(name, seeds=SEEDS):
-    """The variants of exercise `name` for `seeds` (built once: checking does not change them)."""
-    variants = _variants(name)
-    return [variants[seed] for seed in seeds]
+exercises = harness.variants(ch04)
 
 
 # ---------------------------------------------------------------------------------------------
 # Tests
 # ---------------------------------------------------------------------------------------------
 
-def test_exercise_list():
-    assert len(ch04.EXERCISES) >= 10
-    assert len(set(ch04.EXERCISES)) == len(ch04.EXERCISES)
-    assert {cls.__name__ for cls in ch04.EXERCISES} == set(SPECS)
-
-
-@pytest.mark.parametrize("cls", ch04.EXERCISES, ids=lambda cls: cls.__name__)
-def test_docstring_has_examples(cls):
-    doc = cls.__doc__ or ""
-    assert doc.strip() and "Examples\n    --------" in doc and ">>>" in doc
-    assert cls.title and cls.title != "Exercise"
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_statement_reads(name):
-    for ex in exercises(name):
-        text = ex.statement()
-        assert isinstance(text, str) and len(text) > 80
-        assert "nan" not in text.lower() and "inf" not in text.lower()
-        assert "\\n" not in text.replace("\\neq", "")           # no escaped newlines
-        assert "**Answer:**" in text
-        assert ex._repr_markdown_().startswith(f"**{ex.title}**")
-    cls = getattr(ch04, name)
-    assert cls(seed=5).statement() == cls(seed=5).statement()       # a seed is reproducible
-    assert len({ex.statement() for ex in exercises(name, range(20))}) >= 10  # seeds differ
+globals().update(harness.common_tests(
+    ch04, SPECS, GARBAGE, exercises, at_least=10, distinct=(20, 10), words=r"nan|inf",
+    newlines=r"\\neq", odd=harness.ODD))
 
 
 @pytest.mark.parametrize("name", SPECS)
@@ -376,25 +343,6 @@ def test_right_answer_is_accepted(name):
             assert ex.check(np.append(right, 1.0)).status == "correct"
         if form == "projective":                            # and any multiple of a projection
             assert ex.check(-2.5 * right).status == "correct"
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_placeholders_are_unanswered(name):
-    for ex in exercises(name, range(20)):
-        for placeholder in (..., None):
-            fb = ex.check(placeholder)
-            assert fb.status == "unanswered" and not fb
-            assert "`...`" in fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_garbage_is_invalid(name):
-    _, form = SPECS[name]
-    for ex in exercises(name, range(20)):
-        for garbage in GARBAGE[form]:
-            fb = ex.check(garbage)
-            assert fb.status == "invalid", (ex, garbage, fb)
-            assert fb.message
 
 
 @pytest.mark.parametrize("name", SPECS)
@@ -443,12 +391,3 @@ def test_numbers_are_nice_for_hand_work():
         right, _ = perspective_divide(ex)
         assert np.all(np.abs(right) <= 1 + 1e-9)                     # inside the view volume
         assert np.allclose(ex.M * 4, np.round(ex.M * 4))
-
-
-def test_checks_never_raise_on_odd_input():
-    odd = [object(), [None, None, None], {1, 2, 3}, b"bytes", 1j, [[[]]], -1, True]
-    for cls in ch04.EXERCISES:
-        ex = cls(seed=3)
-        for answer in odd:
-            fb = ex.check(answer)
-            assert fb.status in ("invalid", "wrong", "unanswered"), (cls, answer, fb)

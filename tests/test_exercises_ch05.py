@@ -7,7 +7,6 @@ the course_lib or ch05 function the checker calls) is accepted, placeholders are
 garbage is "invalid", and every anticipated mistake, rebuilt here from the question's
 attributes, is named by its diagnosis.
 """
-import functools
 import math
 
 import numpy as np
@@ -15,10 +14,9 @@ import pytest
 from shapely.geometry import LineString, Polygon, box as shapely_box
 
 from course_lib.exercises import ch05
+import exercise_harness as harness
+from exercise_harness import MIN_DIAGNOSED
 
-SEEDS = range(200)
-#: A mistake must be diagnosed in at least this many of the seeds (else the test is vacuous).
-MIN_DIAGNOSED = 10
 SIDES = ("left", "right", "bottom", "top", "near", "far")
 
 
@@ -455,15 +453,7 @@ GARBAGE = {"set": SET_GARBAGE, "codes": CODES_GARBAGE, "words": WORDS_GARBAGE,
            "order": ORDER_GARBAGE}
 
 
-@functools.lru_cache(maxsize=None)
-def _variants(name):
-    cls = getattr(ch05, name)
-    return tuple(cls(seed=seed) for seed in SEEDS)
-
-
-def exercises(name, seeds=SEEDS):
-    variants = _variants(name)
-    return [variants[seed] for seed in seeds]
+exercises = harness.variants(ch05)
 
 
 def solve(name, ex):
@@ -505,31 +495,9 @@ def as_answer(form, value):
 # Tests
 # ---------------------------------------------------------------------------------------------
 
-def test_exercise_list():
-    assert len(ch05.EXERCISES) >= 10
-    assert len(set(ch05.EXERCISES)) == len(ch05.EXERCISES)
-    assert {cls.__name__ for cls in ch05.EXERCISES} == set(SPECS)
-
-
-@pytest.mark.parametrize("cls", ch05.EXERCISES, ids=lambda cls: cls.__name__)
-def test_docstring_has_examples(cls):
-    doc = cls.__doc__ or ""
-    assert doc.strip() and "Examples\n    --------" in doc and ">>>" in doc
-    assert cls.title and cls.title != "Exercise"
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_statement_reads(name):
-    for ex in exercises(name):
-        text = ex.statement()
-        assert isinstance(text, str) and len(text) > 80
-        assert "nan" not in text.lower() and "inf" not in text.lower()
-        assert "\\n" not in text.replace("\\neq", "")
-        assert "**Answer:**" in text
-        assert ex._repr_markdown_().startswith(f"**{ex.title}**")
-    cls = getattr(ch05, name)
-    assert cls(seed=5).statement() == cls(seed=5).statement()
-    assert len({ex.statement() for ex in exercises(name, range(20))}) >= 15
+globals().update(harness.common_tests(
+    ch05, SPECS, GARBAGE, exercises, at_least=10, distinct=(20, 15), words=r"nan|inf",
+    newlines=r"\\neq", odd=harness.ODD + [[1, "a"]]))
 
 
 @pytest.mark.parametrize("name", SPECS)
@@ -589,25 +557,6 @@ def test_rejected_segments_occur_and_are_answered_with_a_word():
 
 
 @pytest.mark.parametrize("name", SPECS)
-def test_placeholders_are_unanswered(name):
-    for ex in exercises(name, range(20)):
-        for placeholder in (..., None):
-            fb = ex.check(placeholder)
-            assert fb.status == "unanswered" and not fb
-            assert "`...`" in fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_garbage_is_invalid(name):
-    form = SPECS[name][1]
-    for ex in exercises(name, range(20)):
-        for garbage in GARBAGE[form]:
-            fb = ex.check(garbage)
-            assert fb.status == "invalid", (ex, garbage, fb)
-            assert fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
 def test_mistakes_are_diagnosed(name):
     form = SPECS[name][1]
     diagnosed = {}
@@ -649,12 +598,3 @@ def test_numbers_are_nice_for_hand_work():
             assert np.allclose(tri[:, 2] * 10, np.round(tri[:, 2] * 10))
     for ex in exercises("RayCastingCount"):
         assert all(k == int(k) for k in ex.hits)
-
-
-def test_checks_never_raise_on_odd_input():
-    odd = [object(), [None, None, None], {1, 2, 3}, b"bytes", 1j, [[[]]], -1, True, [1, "a"]]
-    for cls in ch05.EXERCISES:
-        ex = cls(seed=3)
-        for answer in odd:
-            fb = ex.check(answer)
-            assert fb.status in ("invalid", "wrong", "unanswered"), (cls, answer, fb)

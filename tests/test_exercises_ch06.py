@@ -9,9 +9,7 @@ records typed out from the face lists, the one-ring ordered by angle around the 
 direction, point-to-plane distances and a least-squares solve (numpy.linalg.lstsq) for the
 quadric error metric; never with the course_lib function the checker calls.
 """
-import functools
 import math
-import re
 from collections import Counter
 
 import networkx as nx
@@ -20,22 +18,8 @@ import pytest
 import trimesh
 
 from course_lib.exercises import ch06
-
-SEEDS = range(200)
-#: A mistake must be diagnosed in at least this many of the seeds (else the test is vacuous).
-MIN_DIAGNOSED = 10
-SAME = 1e-9
-
-
-class Either(list):
-    """Several values a slip may give: each is diagnosed."""
-
-
-def gap(a, b):
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    if a.shape != b.shape:
-        return math.inf
-    return float(np.abs(a - b).max())
+import exercise_harness as harness
+from exercise_harness import SAME, SEEDS, Either, gap
 
 
 def cycle(face):
@@ -404,15 +388,7 @@ GARBAGE = {"numbers": NUMBERS_GARBAGE, "number": NUMBER_GARBAGE, "index": INDEX_
 DISCRETE = {"name", "index", "record", "ring"}
 
 
-@functools.lru_cache(maxsize=None)
-def _variants(name):
-    cls = getattr(ch06, name)
-    return tuple(cls(seed=seed) for seed in SEEDS)
-
-
-def exercises(name, seeds=SEEDS):
-    variants = _variants(name)
-    return [variants[seed] for seed in seeds]
+exercises = harness.variants(ch06)
 
 
 def as_answer(value, form):
@@ -431,30 +407,10 @@ def same(a, b, form):
 # Tests
 # ---------------------------------------------------------------------------------------------
 
-def test_exercise_list():
-    assert len(ch06.EXERCISES) >= 10
-    assert len(set(ch06.EXERCISES)) == len(ch06.EXERCISES)
-    assert {cls.__name__ for cls in ch06.EXERCISES} == set(SPECS)
-
-
-@pytest.mark.parametrize("cls", ch06.EXERCISES, ids=lambda cls: cls.__name__)
-def test_docstring_has_examples(cls):
-    doc = cls.__doc__ or ""
-    assert doc.strip() and "Examples\n    --------" in doc and ">>>" in doc
-    assert cls.title and cls.title != "Exercise"
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_statement_reads(name):
-    for ex in exercises(name):
-        text = ex.statement()
-        assert isinstance(text, str) and len(text) > 80
-        assert not re.search(r"\b(nan|inf)\b", text.lower())
-        assert "**Answer:**" in text
-        assert ex._repr_markdown_().startswith(f"**{ex.title}**")
-    cls = getattr(ch06, name)
-    assert cls(seed=5).statement() == cls(seed=5).statement()
-    assert len({ex.statement() for ex in exercises(name, range(20))}) >= 6
+globals().update(harness.common_tests(ch06, SPECS, GARBAGE, exercises, at_least=10, newlines=None))
+test_mistakes_are_diagnosed = harness.mistakes_test(
+    SPECS, exercises, same, as_answer=as_answer,
+    key_seeds=SEEDS)
 
 
 @pytest.mark.parametrize("name", SPECS)
@@ -472,50 +428,7 @@ def test_right_answer_is_accepted(name):
                 answers.append(dict(zip(ch06.WingedEdgeRecord.fields, right)))
         else:
             answers = [right, np.round(right, 3), np.asarray(right).tolist()]
-        for answer in answers:
-            fb = ex.check(answer)
-            assert fb.status == "correct", (ex, answer, fb)
-            assert bool(fb)
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_placeholders_are_unanswered(name):
-    for ex in exercises(name, range(20)):
-        for placeholder in (..., None):
-            fb = ex.check(placeholder)
-            assert fb.status == "unanswered" and not fb
-            assert "`...`" in fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_garbage_is_invalid(name):
-    _, form = SPECS[name]
-    for ex in exercises(name, range(20)):
-        for garbage in GARBAGE[form]:
-            fb = ex.check(garbage)
-            assert fb.status == "invalid", (ex, garbage, fb)
-            assert fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_mistakes_are_diagnosed(name):
-    solve, form = SPECS[name]
-    diagnosed = {}
-    for ex in exercises(name):
-        right, mistakes = solve(ex)
-        for key, values in mistakes.items():
-            for value in (values if isinstance(values, Either) else [values]):
-                fb = ex.check(as_answer(value, form))
-                if same(value, right, form):       # in this variant the slip is right
-                    assert fb.status == "correct", (ex, key, fb)
-                    continue
-                assert fb.status == "wrong", (ex, key, value, fb)
-                assert fb.diagnosis == key, (ex, key, value, fb.diagnosis, fb.message)
-                assert len(fb.message) > 40
-                diagnosed[key] = diagnosed.get(key, 0) + 1
-    keys = set().union(*(solve(ex)[1] for ex in exercises(name)))
-    for key in keys:
-        assert diagnosed.get(key, 0) >= MIN_DIAGNOSED, (key, diagnosed)
+        harness.assert_accepted(ex, answers)
 
 
 def test_wrong_answers_get_teaching_feedback():
@@ -582,13 +495,3 @@ def test_numbers_are_nice_for_hand_work():
             # each quadric is zero at its own vertex
             assert abs(np.append(ex.v1, 1) @ ex.Q1 @ np.append(ex.v1, 1)) < 1e-12
             assert abs(np.append(ex.v2, 1) @ ex.Q2 @ np.append(ex.v2, 1)) < 1e-12
-
-
-def test_checks_never_raise_on_odd_input():
-    odd = [object(), [None, None, None], {1, 2, 3}, b"bytes", 1j, [[[]]], -1, True, [],
-           [object()], np.array([]), {"a"}]
-    for cls in ch06.EXERCISES:
-        ex = cls(seed=3)
-        for answer in odd:
-            fb = ex.check(answer)
-            assert fb.status in ("invalid", "wrong", "unanswered"), (cls, answer, fb)

@@ -10,9 +10,7 @@ question's values); lightness with scikit-image's ``rgb2lab``; the lightness cur
 from matplotlib's colour maps and scikit-image; the kinds of colour map from a table typed out
 here. Never with the course_lib function the checker calls.
 """
-import functools
 import math
-import re
 
 import matplotlib
 import numpy as np
@@ -22,22 +20,8 @@ from skimage.color import rgb2lab
 
 from course_lib import colormaps as cm
 from course_lib.exercises import ch10
-
-SEEDS = range(200)
-#: A mistake must be diagnosed in at least this many of the seeds (else the test is vacuous).
-MIN_DIAGNOSED = 10
-SAME = 1e-9
-
-
-class Either(list):
-    """Several values a slip may give: each is diagnosed."""
-
-
-def gap(a, b):
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    if a.shape != b.shape:
-        return math.inf
-    return float(np.abs(a - b).max())
+import exercise_harness as harness
+from exercise_harness import SAME, gap
 
 
 # ---------------------------------------------------------------------------------------------
@@ -257,15 +241,7 @@ GARBAGE = {"vector": VECTOR_GARBAGE, "number": NUMBER_GARBAGE, "design": DESIGN_
 DISCRETE = {"names", "kind"}
 
 
-@functools.lru_cache(maxsize=None)
-def _variants(name):
-    cls = getattr(ch10, name)
-    return tuple(cls(seed=seed) for seed in SEEDS)
-
-
-def exercises(name, seeds=SEEDS):
-    variants = _variants(name)
-    return [variants[seed] for seed in seeds]
+exercises = harness.variants(ch10)
 
 
 def as_answer(value, form):
@@ -293,31 +269,9 @@ def same(a, b, form):
 # Tests
 # ---------------------------------------------------------------------------------------------
 
-def test_exercise_list():
-    assert len(ch10.EXERCISES) >= 8
-    assert len(set(ch10.EXERCISES)) == len(ch10.EXERCISES)
-    assert {cls.__name__ for cls in ch10.EXERCISES} == set(SPECS)
-
-
-@pytest.mark.parametrize("cls", ch10.EXERCISES, ids=lambda cls: cls.__name__)
-def test_docstring_has_examples(cls):
-    doc = cls.__doc__ or ""
-    assert doc.strip() and "Examples\n    --------" in doc and ">>>" in doc
-    assert cls.title and cls.title != "Exercise"
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_statement_reads(name):
-    for ex in exercises(name):
-        text = ex.statement()
-        assert isinstance(text, str) and len(text) > 80
-        assert not re.search(r"\b(nan|inf)\b", text.lower())
-        assert "\\n" not in re.sub(r"\\neq?\b", "", text)
-        assert "**Answer:**" in text
-        assert ex._repr_markdown_().startswith(f"**{ex.title}**")
-    cls = getattr(ch10, name)
-    assert cls(seed=5).statement() == cls(seed=5).statement()
-    assert len({ex.statement() for ex in exercises(name, range(20))}) >= 6
+globals().update(harness.common_tests(ch10, SPECS, GARBAGE, exercises, at_least=8))
+test_mistakes_are_diagnosed = harness.mistakes_test(
+    SPECS, exercises, same, as_answer=as_answer)
 
 
 @pytest.mark.parametrize("name", SPECS)
@@ -339,50 +293,7 @@ def test_right_answer_is_accepted(name):
                        cm.opacity_transfer(points[:, 0], points[:, 1])]
         else:
             answers = [right, np.round(right, 4), np.asarray(right).tolist()]
-        for answer in answers:
-            fb = ex.check(answer)
-            assert fb.status == "correct", (ex, answer, fb)
-            assert bool(fb)
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_placeholders_are_unanswered(name):
-    for ex in exercises(name, range(20)):
-        for placeholder in (..., None):
-            fb = ex.check(placeholder)
-            assert fb.status == "unanswered" and not fb
-            assert "`...`" in fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_garbage_is_invalid(name):
-    _, form = SPECS[name]
-    for ex in exercises(name, range(20)):
-        for garbage in GARBAGE[form]:
-            fb = ex.check(garbage)
-            assert fb.status == "invalid", (ex, garbage, fb)
-            assert fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_mistakes_are_diagnosed(name):
-    solve, form = SPECS[name]
-    diagnosed = {}
-    for ex in exercises(name):
-        right, mistakes = solve(ex)
-        for key, values in mistakes.items():
-            for value in (values if isinstance(values, Either) else [values]):
-                fb = ex.check(as_answer(value, form))
-                if same(value, right, form):     # in this variant the slip gives the right answer
-                    assert fb.status == "correct", (ex, key, fb)
-                    continue
-                assert fb.status == "wrong", (ex, key, value, fb)
-                assert fb.diagnosis == key, (ex, key, value, fb.diagnosis, fb.message)
-                assert len(fb.message) > 40
-                diagnosed[key] = diagnosed.get(key, 0) + 1
-    keys = set().union(*(solve(ex)[1] for ex in exercises(name, range(30))))
-    for key in keys:
-        assert diagnosed.get(key, 0) >= MIN_DIAGNOSED, (key, diagnosed)
+        harness.assert_accepted(ex, answers)
 
 
 def test_wrong_answers_get_teaching_feedback():
@@ -426,13 +337,3 @@ def test_every_scenario_and_kind_is_asked():
     assert {ex.scenario for ex in exercises("ChooseMapKind")} == {s for s, _ in ch10.SCENARIOS}
     for scenario, kind in ch10.SCENARIOS:
         assert [k for w, k in KIND_BY_WORD.items() if w in scenario] == [kind]
-
-
-def test_checks_never_raise_on_odd_input():
-    odd = [object(), [None, None, None], {1, 2, 3}, b"bytes", 1j, [[[]]], -1, True, [],
-           [object()], np.array([]), {"a"}]
-    for cls in ch10.EXERCISES:
-        ex = cls(seed=3)
-        for answer in odd:
-            fb = ex.check(answer)
-            assert fb.status in ("invalid", "wrong", "unanswered"), (cls, answer, fb)

@@ -10,27 +10,16 @@ course_lib.texturing, which the checkers call): bilinear samples with
 triangle and finding the point of the triangle under the pixel, OpenGL's wrap rules, and the
 mapping, mipmap and checkerboard formulas typed out below.
 """
-import functools
 import math
-import re
 
 import numpy as np
-import pytest
 from scipy.ndimage import map_coordinates
 from trimesh.triangles import points_to_barycentric
 
 from course_lib.exercises import ch14
+import exercise_harness as harness
+from exercise_harness import SAME, SEEDS, Either
 from course_lib.exercises.core import gap
-
-SEEDS = range(200)
-#: A mistake must be diagnosed in at least this many of the seeds (else the test is vacuous).
-MIN_DIAGNOSED = 10
-#: Answers closer than this are "the same".
-SAME = 1e-9
-
-
-class Either(list):
-    """Several values a slip may give: each one is diagnosed as that slip."""
 
 
 # ---------------------------------------------------------------------------------------------
@@ -297,97 +286,22 @@ GARBAGE = {"number": NUMBER_GARBAGE, "uv": UV_GARBAGE, "vector3": VECTOR3_GARBAG
            "three": THREE_GARBAGE, "four": FOUR_GARBAGE}
 
 
-@functools.lru_cache(maxsize=None)
-def _variants(name):
-    cls = getattr(ch14, name)
-    return tuple(cls(seed=seed) for seed in SEEDS)
-
-
-def exercises(name, seeds=SEEDS):
-    variants = _variants(name)
-    return [variants[seed] for seed in seeds]
+exercises = harness.variants(ch14)
 
 
 # ---------------------------------------------------------------------------------------------
 # Tests
 # ---------------------------------------------------------------------------------------------
 
-def test_exercise_list():
-    assert len(ch14.EXERCISES) >= 8
-    assert len(set(ch14.EXERCISES)) == len(ch14.EXERCISES)
-    assert {cls.__name__ for cls in ch14.EXERCISES} == set(SPECS)
+globals().update(harness.common_tests(
+    ch14, SPECS, GARBAGE, exercises, at_least=8, distinct=(30, 10),
+    newlines=r"\\neq?\b|\\normal"))
+test_mistakes_are_diagnosed = harness.mistakes_test(
+    SPECS, exercises, lambda a, b, form: gap(a, b) < SAME,
+    key_seeds=SEEDS)
 
 
-@pytest.mark.parametrize("cls", ch14.EXERCISES, ids=lambda cls: cls.__name__)
-def test_docstring_has_examples(cls):
-    doc = cls.__doc__ or ""
-    assert doc.strip() and "Examples\n    --------" in doc and ">>>" in doc
-    assert cls.title and cls.title != "Exercise"
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_statement_reads(name):
-    for ex in exercises(name):
-        text = ex.statement()
-        assert isinstance(text, str) and len(text) > 80
-        assert not re.search(r"\b(nan|inf)\b", text.lower())
-        assert "\\n" not in re.sub(r"\\neq?\b|\\normal", "", text)      # no escaped newlines
-        assert "**Answer:**" in text
-        assert ex._repr_markdown_().startswith(f"**{ex.title}**")
-    cls = getattr(ch14, name)
-    assert cls(seed=5).statement() == cls(seed=5).statement()        # a seed is reproducible
-    assert len({ex.statement() for ex in exercises(name, range(30))}) >= 10  # seeds differ
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_right_answer_is_accepted(name):
-    solve, _ = SPECS[name]
-    for ex in exercises(name):
-        right, _ = solve(ex)
-        for answer in (right, np.round(right, 3), np.asarray(right).tolist()):
-            fb = ex.check(answer)
-            assert fb.status == "correct", (ex, answer, fb)
-            assert bool(fb)
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_placeholders_are_unanswered(name):
-    for ex in exercises(name, range(20)):
-        for placeholder in (..., None):
-            fb = ex.check(placeholder)
-            assert fb.status == "unanswered" and not fb
-            assert "`...`" in fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_garbage_is_invalid(name):
-    _, form = SPECS[name]
-    for ex in exercises(name, range(20)):
-        for garbage in GARBAGE[form]:
-            fb = ex.check(garbage)
-            assert fb.status == "invalid", (ex, garbage, fb)
-            assert fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_mistakes_are_diagnosed(name):
-    solve, _ = SPECS[name]
-    diagnosed = {}
-    for ex in exercises(name):
-        right, mistakes = solve(ex)
-        for key, values in mistakes.items():
-            for value in (values if isinstance(values, Either) else [values]):
-                fb = ex.check(value)
-                if gap(value, right) < SAME:     # in this variant the slip gives the right answer
-                    assert fb.status == "correct", (ex, key, fb)
-                    continue
-                assert fb.status == "wrong", (ex, key, value, fb)
-                assert fb.diagnosis == key, (ex, key, value, fb.diagnosis, fb.message)
-                assert len(fb.message) > 40
-                diagnosed[key] = diagnosed.get(key, 0) + 1
-    keys = set().union(*(solve(ex)[1] for ex in exercises(name)))
-    for key in keys:
-        assert diagnosed.get(key, 0) >= MIN_DIAGNOSED, (key, diagnosed)
+test_right_answer_is_accepted = harness.right_answer_test(SPECS, exercises)
 
 
 def test_wrong_answers_get_teaching_feedback():
@@ -435,13 +349,3 @@ def test_perspective_construction_agrees_with_the_closed_form():
         lam, w, q = ex.weights, ex.w, ex.uv
         closed = (lam / w) @ q / (lam / w).sum()
         assert np.allclose(perspective(ex)[0], closed)
-
-
-def test_checks_never_raise_on_odd_input():
-    odd = [object(), [None, None, None], {1, 2, 3}, b"bytes", 1j, [[[]]], -1, True, [],
-           [object()], np.array([]), {"a"}]
-    for cls in ch14.EXERCISES:
-        ex = cls(seed=3)
-        for answer in odd:
-            fb = ex.check(answer)
-            assert fb.status in ("invalid", "wrong", "unanswered"), (cls, answer, fb)

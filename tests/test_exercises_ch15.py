@@ -8,28 +8,15 @@ triangle), PyGLM's GLSL ``reflect`` and ``refract``, the closest point of a segm
 (shadow rays), an explicit enumeration of the ray tree, a halving loop for the BVH, and formulas
 typed out below; never with the course_lib.raytracing function the checker calls.
 """
-import functools
 import math
-import re
 
 import numpy as np
-import pytest
 from pyglm import glm
 
 from course_lib.exercises import ch15
+import exercise_harness as harness
+from exercise_harness import SAME, SEEDS, gap
 from course_lib.exercises.core import APART
-
-SEEDS = range(200)
-#: A mistake must be diagnosed in at least this many of the seeds (else the test is vacuous).
-MIN_DIAGNOSED = 10
-SAME = 1e-9
-
-
-def gap(a, b):
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    if a.shape != b.shape:
-        return math.inf
-    return float(np.abs(a - b).max())
 
 
 # ---------------------------------------------------------------------------------------------
@@ -177,94 +164,21 @@ GARBAGE = {"vector": ["x", [1, 2], [[1, 2, 3]], [1, float("nan"), 2], {"a": 1}],
            "parts": ["x", [1], [[1, 2, 3, 4, 5]], {"a": 1}]}
 
 
-@functools.lru_cache(maxsize=None)
-def _variants(name):
-    cls = getattr(ch15, name)
-    return tuple(cls(seed=seed) for seed in SEEDS)
-
-
-def exercises(name, seeds=SEEDS):
-    variants = _variants(name)
-    return [variants[seed] for seed in seeds]
+exercises = harness.variants(ch15)
 
 
 # ---------------------------------------------------------------------------------------------
 # Tests
 # ---------------------------------------------------------------------------------------------
 
-def test_exercise_list():
-    assert len(ch15.EXERCISES) >= 8
-    assert len(set(ch15.EXERCISES)) == len(ch15.EXERCISES)
-    assert {cls.__name__ for cls in ch15.EXERCISES} == set(SPECS)
+globals().update(harness.common_tests(
+    ch15, SPECS, GARBAGE, exercises, at_least=8, distinct=(40, 5), newlines=None))
+test_mistakes_are_diagnosed = harness.mistakes_test(
+    SPECS, exercises, lambda a, b, form: gap(a, b) < SAME,
+    min_message=30, key_seeds=SEEDS)
 
 
-@pytest.mark.parametrize("cls", ch15.EXERCISES, ids=lambda cls: cls.__name__)
-def test_docstring_has_examples(cls):
-    doc = cls.__doc__ or ""
-    assert doc.strip() and "Examples\n    --------" in doc and ">>>" in doc
-    assert cls.title and cls.title != "Exercise"
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_statement_reads(name):
-    for ex in exercises(name):
-        text = ex.statement()
-        assert isinstance(text, str) and len(text) > 80
-        assert not re.search(r"\b(nan|inf)\b", text.lower())
-        assert "**Answer:**" in text
-        assert ex._repr_markdown_().startswith(f"**{ex.title}**")
-    cls = getattr(ch15, name)
-    assert cls(seed=5).statement() == cls(seed=5).statement()
-    assert len({ex.statement() for ex in exercises(name, range(40))}) >= 5
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_right_answer_is_accepted(name):
-    solve, _ = SPECS[name]
-    for ex in exercises(name):
-        right, _ = solve(ex)
-        for answer in (right, np.round(right, 3), np.asarray(right).tolist()):
-            fb = ex.check(answer)
-            assert fb.status == "correct", (ex, answer, fb)
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_placeholders_are_unanswered(name):
-    for ex in exercises(name, range(20)):
-        for placeholder in (..., None):
-            fb = ex.check(placeholder)
-            assert fb.status == "unanswered" and not fb
-            assert "`...`" in fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_garbage_is_invalid(name):
-    _, form = SPECS[name]
-    for ex in exercises(name, range(20)):
-        for garbage in GARBAGE[form]:
-            fb = ex.check(garbage)
-            assert fb.status == "invalid", (ex, garbage, fb)
-            assert fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_mistakes_are_diagnosed(name):
-    solve, _ = SPECS[name]
-    diagnosed = {}
-    for ex in exercises(name):
-        right, mistakes = solve(ex)
-        for key, value in mistakes.items():
-            fb = ex.check(value)
-            if gap(value, right) < SAME:          # in this variant the slip gives the right answer
-                assert fb.status == "correct", (ex, key, fb)
-                continue
-            assert fb.status == "wrong", (ex, key, value, fb)
-            assert fb.diagnosis == key, (ex, key, value, fb.diagnosis, fb.message)
-            assert len(fb.message) > 30
-            diagnosed[key] = diagnosed.get(key, 0) + 1
-    keys = set().union(*(solve(ex)[1] for ex in exercises(name)))
-    for key in keys:
-        assert diagnosed.get(key, 0) >= MIN_DIAGNOSED, (key, diagnosed)
+test_right_answer_is_accepted = harness.right_answer_test(SPECS, exercises)
 
 
 def test_wrong_answers_get_teaching_feedback():
@@ -288,13 +202,3 @@ def test_numbers_are_nice_for_hand_work():
         assert ex.angle % 15 == 0
     both = {ex.blocked for ex in exercises("ShadowRay")}
     assert both == {True, False}                  # lit and shadowed variants both occur
-
-
-def test_checks_never_raise_on_odd_input():
-    odd = [object(), [None, None, None], {1, 2, 3}, b"bytes", 1j, [[[]]], -1, True, [],
-           [object()], np.array([]), {"a"}]
-    for cls in ch15.EXERCISES:
-        ex = cls(seed=3)
-        for answer in odd:
-            fb = ex.check(answer)
-            assert fb.status in ("invalid", "wrong", "unanswered"), (cls, answer, fb)

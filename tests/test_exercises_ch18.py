@@ -10,9 +10,7 @@ compositing, the opacity correction, the projection and the integration steps by
 typed out below (checked against scipy's matrix exponential and the closed form of Euler's
 drift), never with the course_lib function the checker calls.
 """
-import functools
 import math
-import re
 
 import numpy as np
 import pytest
@@ -20,24 +18,12 @@ from scipy.linalg import expm
 from skimage.measure import find_contours, marching_cubes
 
 from course_lib.exercises import ch18
+import exercise_harness as harness
+from exercise_harness import SAME, Either, gap
 
-SEEDS = range(200)
-MIN_DIAGNOSED = 10
-SAME = 1e-9
 
 #: Corner k of a cube as (x, y, z), typed out (the textbook numbering of the statement).
 CORNERS = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
-
-
-class Either(list):
-    """Several values a slip may give: each is diagnosed."""
-
-
-def gap(a, b):
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    if a.shape != b.shape:
-        return math.inf
-    return float(np.abs(a - b).max())
 
 
 def unordered_gap(a, b):
@@ -287,15 +273,7 @@ GARBAGE = {"number": NUMBER_GARBAGE, "points": POINTS_GARBAGE, "pairs": PAIRS_GA
            "vector": VECTOR_GARBAGE, "point": POINT_GARBAGE, "matrix": MATRIX_GARBAGE}
 
 
-@functools.lru_cache(maxsize=None)
-def _variants(name):
-    cls = getattr(ch18, name)
-    return tuple(cls(seed=seed) for seed in SEEDS)
-
-
-def exercises(name, seeds=SEEDS):
-    variants = _variants(name)
-    return [variants[seed] for seed in seeds]
+exercises = harness.variants(ch18)
 
 
 def as_answer(value, form):
@@ -316,31 +294,11 @@ def same(a, b, form):
 # Tests
 # ---------------------------------------------------------------------------------------------
 
-def test_exercise_list():
-    assert len(ch18.EXERCISES) >= 8
-    assert len(set(ch18.EXERCISES)) == len(ch18.EXERCISES)
-    assert {cls.__name__ for cls in ch18.EXERCISES} == set(SPECS)
-
-
-@pytest.mark.parametrize("cls", ch18.EXERCISES, ids=lambda cls: cls.__name__)
-def test_docstring_has_examples(cls):
-    doc = cls.__doc__ or ""
-    assert doc.strip() and "Examples\n    --------" in doc and ">>>" in doc
-    assert cls.title and cls.title != "Exercise"
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_statement_reads(name):
-    for ex in exercises(name):
-        text = ex.statement()
-        assert isinstance(text, str) and len(text) > 80
-        assert not re.search(r"\b(nan|inf)\b", text.lower())
-        assert "\\n" not in re.sub(r"\\neq?\b", "", text)
-        assert "**Answer:**" in text
-        assert ex._repr_markdown_().startswith(f"**{ex.title}**")
-    cls = getattr(ch18, name)
-    assert cls(seed=5).statement() == cls(seed=5).statement()
-    assert len({ex.statement() for ex in exercises(name, range(20))}) >= 6
+globals().update(harness.common_tests(
+    ch18, SPECS, GARBAGE, exercises, at_least=8,
+    odd=harness.ODD + harness.EMPTY_ODD + [[[..., 1], [2, 3]]]))
+test_mistakes_are_diagnosed = harness.mistakes_test(
+    SPECS, exercises, same, as_answer=as_answer)
 
 
 @pytest.mark.parametrize("name", SPECS)
@@ -360,50 +318,7 @@ def test_right_answer_is_accepted(name):
             answers = [right, np.round(right, 4), np.asarray(right).tolist()]
         if form == "point":
             answers.append(np.append(right, 1.0))                  # homogeneous with w = 1
-        for answer in answers:
-            fb = ex.check(answer)
-            assert fb.status == "correct", (ex, answer, fb)
-            assert bool(fb)
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_placeholders_are_unanswered(name):
-    for ex in exercises(name, range(20)):
-        for placeholder in (..., None):
-            fb = ex.check(placeholder)
-            assert fb.status == "unanswered" and not fb
-            assert "`...`" in fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_garbage_is_invalid(name):
-    _, form = SPECS[name]
-    for ex in exercises(name, range(20)):
-        for garbage in GARBAGE[form]:
-            fb = ex.check(garbage)
-            assert fb.status == "invalid", (ex, garbage, fb)
-            assert fb.message
-
-
-@pytest.mark.parametrize("name", SPECS)
-def test_mistakes_are_diagnosed(name):
-    solve, form = SPECS[name]
-    diagnosed = {}
-    for ex in exercises(name):
-        right, mistakes = solve(ex)
-        for key, values in mistakes.items():
-            for value in (values if isinstance(values, Either) else [values]):
-                fb = ex.check(as_answer(value, form))
-                if same(value, right, form):     # in this variant the slip gives the right answer
-                    assert fb.status == "correct", (ex, key, fb)
-                    continue
-                assert fb.status == "wrong", (ex, key, value, fb)
-                assert fb.diagnosis == key, (ex, key, value, fb.diagnosis, fb.message)
-                assert len(fb.message) > 40
-                diagnosed[key] = diagnosed.get(key, 0) + 1
-    keys = set().union(*(solve(ex)[1] for ex in exercises(name, range(30))))
-    for key in keys:
-        assert diagnosed.get(key, 0) >= MIN_DIAGNOSED, (key, diagnosed)
+        harness.assert_accepted(ex, answers)
 
 
 def test_wrong_answers_get_teaching_feedback():
@@ -439,13 +354,3 @@ def test_questions_are_well_posed():
     for ex in exercises("EarlyTermination"):
         assert 3 <= early_termination(ex)[0] <= 9
     assert {ex.axis for ex in exercises("MaxIntensityProjection")} == {0, 1, 2}
-
-
-def test_checks_never_raise_on_odd_input():
-    odd = [object(), [None, None, None], {1, 2, 3}, b"bytes", 1j, [[[]]], -1, True, [],
-           [object()], np.array([]), {"a"}, [[..., 1], [2, 3]]]
-    for cls in ch18.EXERCISES:
-        ex = cls(seed=3)
-        for answer in odd:
-            fb = ex.check(answer)
-            assert fb.status in ("invalid", "wrong", "unanswered"), (cls, answer, fb)

@@ -25,8 +25,8 @@ import numpy as np
 
 from .. import clipping
 from .. import format as fmt
-from .core import (APART, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake,
-                   data_note, diagnose_matrix, diagnose_parts, gap, is_unanswered, pick,
+from .core import (APART, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, data_note,
+                   diagnose_matrix, diagnose_parts, gap, is_unanswered, parts_separated, pick,
                    read_floats, small_ints)
 
 __all__ = [
@@ -1002,7 +1002,7 @@ class LiangBarskyInterval(DrawnExercise):
         return [Mistake(v, text, key) for key, (v, text) in self._variants().items()]
 
     def separated(self, mistakes):
-        return _parts_separated(self._parts())
+        return parts_separated(self._parts(), same=None)
 
     def _check(self, answer):
         return diagnose_parts(answer, self._parts(), "your interval", "`[t_in, t_out]`.",
@@ -1018,18 +1018,6 @@ class LiangBarskyInterval(DrawnExercise):
             r"of this segment is visible.)" "\n\n"
             r"**Answer:** a list of 2 numbers `[t_in, t_out]`. " + DECIMALS + "\n\n"
             + data_note("box_min", "box_max", "p0", "p1"))
-
-
-def _parts_separated(parts):
-    """Each number's anticipated values differ from the answer and from each other."""
-    for _, expected, mistakes in parts:
-        for i, m in enumerate(mistakes):
-            if abs(float(m.value) - expected) < APART:
-                return False
-            for other in mistakes[i + 1:]:
-                if other.key != m.key and abs(float(m.value) - float(other.value)) < APART:
-                    return False
-    return True
 
 
 class LiangBarskyClip3D(_Listed):
@@ -1368,7 +1356,7 @@ class SutherlandHodgmanArea(DrawnExercise):
                 Mistake([self.expected[0], self.triangle_area], "", "unclipped area")]
 
     def separated(self, mistakes):
-        return _parts_separated(self._parts())
+        return parts_separated(self._parts(), same=None)
 
     def _check(self, answer):
         return diagnose_parts(answer, self._parts(), "your answer",
@@ -1877,7 +1865,7 @@ class RayCastingCount(DrawnExercise):
                 Mistake([brute, with_bv, len(self.triangles)], "", "one test per object")]
 
     def separated(self, mistakes):
-        return _parts_separated(self._parts())
+        return parts_separated(self._parts(), same=None)
 
     def _check(self, answer):
         return diagnose_parts(answer, self._parts(), "your counts",

@@ -32,8 +32,8 @@ import numpy as np
 
 from .. import format as fmt
 from .. import mesh
-from .core import (APART, ATOL, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake,
-                   data_note, diagnose_matrix, diagnose_parts, is_unanswered, pick,
+from .core import (DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, close, data_note,
+                   diagnose_matrix, diagnose_parts, has_placeholder, hinted, parts_separated, pick,
                    read_floats)
 
 __all__ = [
@@ -64,40 +64,9 @@ _GENERIC = {"components differ", "wrong length", "opposite sign", "entries diffe
 # Helpers
 # ---------------------------------------------------------------------------------------------
 
-def _hinted(feedback, hint):
-    """`feedback` with `hint` appended when no anticipated mistake explained the answer."""
-    if hint and feedback.status == "wrong" and feedback.diagnosis in _GENERIC:
-        return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
-    return feedback
-
-
-def _placeholder(answer):
-    """True for `...`, None, and a list or tuple with a `...` or None in it."""
-    return is_unanswered(answer) or (isinstance(answer, (list, tuple))
-                                     and any(is_unanswered(a) for a in answer))
-
-
-def _parts_separated(parts):
-    """Whether, number by number, the anticipated slips can be told apart (see ch07)."""
-    for _, expected, mistakes in parts:
-        live = []
-        for m in mistakes:
-            d = abs(float(m.value) - expected)
-            if d <= SAME:
-                continue
-            if d < APART:
-                return False
-            live.append(m)
-        for i, a in enumerate(live):
-            for b in live[i + 1:]:
-                if a.key != b.key and abs(float(a.value) - float(b.value)) < APART:
-                    return False
-    return True
-
-
 def _read_ints(answer, n, form, low=None, high=None):
     """A tuple of `n` whole numbers from the answer, or a Feedback saying why not."""
-    if _placeholder(answer):
+    if has_placeholder(answer, none_inside=True):
         return Feedback("unanswered", UNANSWERED)
     if isinstance(answer, (bool, np.bool_)):
         return Feedback("invalid", form, "unreadable")
@@ -170,7 +139,7 @@ class _Chapter6(DrawnExercise):
     hint = ""
 
     def _check(self, answer):
-        return _hinted(self._judge(answer), self.hint)
+        return hinted(self._judge(answer), self.hint, _GENERIC)
 
     def _judge(self, answer):
         return super()._check(answer)
@@ -186,7 +155,7 @@ class _Parts(_Chapter6):
         return []
 
     def separated(self, mistakes):
-        return _parts_separated(self._parts())
+        return parts_separated(self._parts())
 
     def _judge(self, answer):
         return diagnose_parts(answer, self._parts(), "your answer", self.form_hint, self.hint)
@@ -641,7 +610,7 @@ class Manifoldness(_Chapter6):
                 r"form one closed fan: a **closed manifold**.")
 
     def _judge(self, answer):
-        if _placeholder(answer):
+        if has_placeholder(answer, none_inside=True):
             return Feedback("unanswered", UNANSWERED)
         form = "Give one of the names " + ", ".join(f"`'{k}'`" for k in self.menu) + "."
         if not isinstance(answer, str):
@@ -792,7 +761,7 @@ class WingedEdgeRecord(_Record):
 
     def _read(self, answer):
         if isinstance(answer, dict):
-            if _placeholder(list(answer.values())):
+            if has_placeholder(list(answer.values()), none_inside=True):
                 return Feedback("unanswered", UNANSWERED)
             if set(answer) != set(_WING_FIELDS):
                 return Feedback("invalid", self.form_hint, "unreadable")
@@ -1103,7 +1072,7 @@ class VertexQuadric(_Chapter6):
 
     def _judge(self, answer):
         value = read_floats(answer)
-        if value is not None and value.shape == (3, 3) and _close(value,
+        if value is not None and value.shape == (3, 3) and close(value,
                                                                  self.expected[:3, :3]):
             return Feedback("wrong", r"That is only the $3 \times 3$ block $A$ (the normals' "
                             r"part). The quadric is $4 \times 4$: $p = (a, b, c, d)$ has four "
@@ -1121,11 +1090,6 @@ class VertexQuadric(_Chapter6):
             r"**Answer:** the $4 \times 4$ matrix $Q$ (a nested list or numpy array). "
             + DECIMALS + "\n\n" + data_note("point", "normals") + " (`.normals` are the "
             "whole-number normals of the equations above, not normalised.)")
-
-
-def _close(a, b):
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    return a.shape == b.shape and bool(np.allclose(a, b, rtol=1e-3, atol=ATOL))
 
 
 def _matrix_latex(Q):
@@ -1257,7 +1221,7 @@ class OptimalPosition(_TwoVertices):
             return False
         x, cost = self.expected[:3], self.expected[3]
         return (cost > 0.1 and np.abs(x).max() <= 6
-                and not _close(x, self.v1) and not _close(x, self.v2))
+                and not close(x, self.v1) and not close(x, self.v2))
 
     def _parts(self):
         Q = self.Q1 + self.Q2
@@ -1285,7 +1249,7 @@ class OptimalPosition(_TwoVertices):
 
     def separated(self, mistakes):
         parts = self._parts()
-        if not _parts_separated(parts):
+        if not parts_separated(parts):
             return False
         # the position's slips must show in at least one coordinate
         for key in ("sign of b", "midpoint"):

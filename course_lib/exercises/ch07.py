@@ -30,8 +30,9 @@ import numpy as np
 
 from .. import curves, surfaces
 from .. import format as fmt
-from .core import (APART, ATOL, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake,
-                   data_note, diagnose_matrix, diagnose_parts, is_unanswered, pick)
+from .core import (ATOL, DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, close, data_note,
+                   diagnose_matrix, diagnose_parts, has_placeholder, hinted, is_unanswered,
+                   parts_separated, pick, read_names)
 
 __all__ = [
     "EXERCISES",
@@ -91,13 +92,6 @@ def _control_polygon(rng, n_points, low=0, high=4):
             return p
 
 
-def _hinted(feedback, hint):
-    """`feedback` with `hint` appended when no anticipated mistake explained the answer."""
-    if hint and feedback.status == "wrong" and feedback.diagnosis in _GENERIC:
-        return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
-    return feedback
-
-
 def _floats_or_none(answer):
     """The answer as a float array (NaN and infinity allowed), or None if it is no array."""
     if is_unanswered(answer) or isinstance(answer, (str, bytes, dict, set)):
@@ -106,11 +100,6 @@ def _floats_or_none(answer):
         return np.asarray(answer, dtype=float)
     except (TypeError, ValueError):
         return None
-
-
-def _close(a, b):
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    return a.shape == b.shape and bool(np.allclose(a, b, rtol=1e-3, atol=ATOL))
 
 
 def _bernstein_sum(P, t, binomial=True):
@@ -168,28 +157,6 @@ def _knots_words(knots):
     return (r"the knot vector $U = (" + r",\ ".join(_num(u) for u in knots) + ")$")
 
 
-def _parts_separated(parts):
-    """Whether, number by number, the anticipated slips can be told apart.
-
-    A slip may give the right value of one number (then it is not a slip for that number);
-    otherwise it must be at least APART from the right value and from slips of other keys.
-    """
-    for _, expected, mistakes in parts:
-        live = []
-        for m in mistakes:
-            d = abs(float(m.value) - expected)
-            if d <= SAME:
-                continue
-            if d < APART:
-                return False
-            live.append(m)
-        for i, a in enumerate(live):
-            for b in live[i + 1:]:
-                if a.key != b.key and abs(float(a.value) - float(b.value)) < APART:
-                    return False
-    return True
-
-
 class _Chapter7(DrawnExercise):
     """The chapter's base: an answer the anticipated slips do not explain gets ``hint``.
 
@@ -202,7 +169,7 @@ class _Chapter7(DrawnExercise):
     vector_like = False
 
     def _check(self, answer):
-        return _hinted(self._judge(answer), self.hint)
+        return hinted(self._judge(answer), self.hint, _GENERIC)
 
     def _judge(self, answer):
         feedback = super()._check(answer)
@@ -306,7 +273,7 @@ class DeCasteljauPoint(_Chapter7):
 
     def _judge(self, answer):
         value = _floats_or_none(answer)
-        if value is not None and _close(value, self._pair):
+        if value is not None and close(value, self._pair):
             return Feedback("wrong", r"You stopped one level early: these are the two points "
                             r"$P_0^{n-1}, P_1^{n-1}$ of the last-but-one level. One more round "
                             r"gives the curve point, $(1 - t)\,P_0^{n-1} + t\,P_1^{n-1}$.",
@@ -376,7 +343,7 @@ class DeCasteljauLevel(_Points):
 
     def _shape_feedback(self, value):
         for level, points in enumerate(self._levels):
-            if level != self.r and _close(value, points):
+            if level != self.r and close(value, points):
                 return Feedback("wrong", f"These are the points of level {level}; the question "
                                 f"asks for level {self.r}, which has {4 - self.r} points "
                                 r"(each level has one point fewer than the one before).",
@@ -699,7 +666,7 @@ class ClampedKnotVector(_Chapter7):
         if value is None or value.ndim != 1 or len(value) < 2 or not np.isfinite(value).all():
             return Feedback("invalid", "Give the knot vector as a list of numbers, e.g. "
                             "`[0, 0, 0.5, 1, 1]`.", "unreadable")
-        if _close(value, self.expected):
+        if close(value, self.expected):
             return Feedback("correct", f"The knot vector is right: {want} knots, the ends "
                             f"repeated {p + 1} times.")
         if np.any(np.diff(value) < -1e-9):
@@ -736,7 +703,7 @@ class ClampedKnotVector(_Chapter7):
         if len(value) != want:
             return Feedback("wrong", f"You gave {len(value)} knots." + count, "wrong count")
         scale = value[-1] - value[0]
-        if scale > 0 and _close((value - value[0]) / scale, self.expected):
+        if scale > 0 and close((value - value[0]) / scale, self.expected):
             return Feedback("wrong", "The pattern is right, but your knots run from "
                             f"{_num(value[0])} to {_num(value[-1])}, and the question asks for "
                             "the domain $[0, 1]$. (Shifting and scaling all knots alike gives "
@@ -818,7 +785,7 @@ class CoxDeBoorBasis(_Chapter7):
                             r"$u_{i+p} - u_i = 0$; in the Cox-de Boor recursion such a term "
                             r"counts as 0 (its basis function of lower degree vanishes "
                             r"anyway). Skip those terms.", "zero denominator")
-        if value is not None and _close(value, self._lower):
+        if value is not None and close(value, self._lower):
             return Feedback("wrong", rf"These are the {len(value)} functions of degree "
                             rf"$p - 1 = {self.p - 1}$. One more round of the recursion gives "
                             rf"the {self.n_control} functions of degree {self.p}.",
@@ -906,15 +873,9 @@ class BasisSupport(_Chapter7):
             + data_note("knots", "p", "i"))
 
 
-def _placeholder(answer):
-    """True for `...`, None, and a list or tuple with a `...` in it."""
-    return is_unanswered(answer) or (isinstance(answer, (list, tuple))
-                                     and any(a is Ellipsis for a in answer))
-
-
 def _read_indices(answer, n):
     """A set of indices 0..n-1 from a list of whole numbers, or a Feedback."""
-    if _placeholder(answer):
+    if has_placeholder(answer):
         return Feedback("unanswered", UNANSWERED)
     form = "Give the indices as a list of whole numbers, e.g. `[1, 2, 3]`."
     if isinstance(answer, (str, bytes, dict)):
@@ -1254,7 +1215,7 @@ class CircleArc(_Chapter7):
         return []
 
     def separated(self, mistakes):
-        return _parts_separated(self._parts())
+        return parts_separated(self._parts())
 
     def _judge(self, answer):
         return diagnose_parts(answer, self._parts(), "your answer", "`[w, x, y]`.",
@@ -1289,7 +1250,7 @@ _MIDDLE_WEIGHTS = (0.5, 1, 1.5, 2, 3, 4)
 
 def _read_conics(answer, n):
     """A list of n conic names from the answer, or a Feedback."""
-    if _placeholder(answer):
+    if has_placeholder(answer):
         return Feedback("unanswered", UNANSWERED)
     form = (f"Give a list of {n} strings, each `'ellipse'`, `'parabola'` or `'hyperbola'`, "
             "e.g. `['ellipse', 'hyperbola', 'parabola']`.")
@@ -1653,23 +1614,10 @@ class CurveProperties(_Chapter7):
         return True
 
     def _read(self, answer):
-        if _placeholder(answer):
-            return Feedback("unanswered", UNANSWERED)
         form = ("Give a list of property names from the menu, e.g. "
                 "`['convex hull', 'affine invariance']` (`[]` if none holds).")
-        if isinstance(answer, (str, bytes, dict)) or not isinstance(
-                answer, (list, tuple, set, frozenset, np.ndarray)):
-            return Feedback("invalid", form, "unreadable")
-        names = set()
-        for item in answer:
-            if not isinstance(item, str):
-                return Feedback("invalid", form, "unreadable")
-            name = _normalise_property(item)
-            if name not in PROPERTY_MENU:
-                return Feedback("invalid", f"{item!r} is not on the menu. The names are: "
-                                + ", ".join(f"`{n}`" for n in self.menu) + ".", "unreadable")
-            names.add(name)
-        return names
+        return read_names(answer, self.menu, form, "is not on the menu. The names are:",
+                          _normalise_property)
 
     def _judge(self, answer):
         names = self._read(answer)

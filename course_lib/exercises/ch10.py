@@ -27,7 +27,7 @@ import numpy as np
 from .. import colormaps as cm
 from .. import format as fmt
 from .core import (ATOL, DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, data_note,
-                   is_unanswered, pick, read_floats)
+                   has_placeholder, hinted, pick, read_floats, read_names)
 
 __all__ = [
     "EXERCISES",
@@ -49,19 +49,6 @@ _vec = fmt.vector_latex
 
 #: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
 _GENERIC = {"components differ", "wrong length", "opposite sign", "value differs"}
-
-
-def _hinted(feedback, hint):
-    """`feedback` with `hint` appended when no anticipated mistake explained the answer."""
-    if hint and feedback.status == "wrong" and feedback.diagnosis in _GENERIC:
-        return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
-    return feedback
-
-
-def _placeholder(answer):
-    """True for `...`, None, and a list or tuple with a `...` in it."""
-    return is_unanswered(answer) or (isinstance(answer, (list, tuple))
-                                     and any(a is Ellipsis for a in answer))
 
 
 def _values_words(values):
@@ -89,7 +76,7 @@ class _Chapter10(DrawnExercise):
                                                                 rtol=1e-3, atol=ATOL))]
             feedback = Feedback("wrong", f"Components {off} (counted from 0) of {self.what} "
                                 "are off.", "components differ")
-        return _hinted(feedback, self.hint)
+        return hinted(feedback, self.hint, _GENERIC)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -399,7 +386,7 @@ def _read_control_points(answer):
             return Feedback("invalid", "Your transfer function has several channels; give an "
                             "opacity function (one number per control point).", "unreadable")
         return answer
-    if _placeholder(answer):
+    if has_placeholder(answer):
         return Feedback("unanswered", UNANSWERED)
     form = ("Give the control points as a list of `(scalar, opacity)` pairs, e.g. "
             "`[(10, 0), (20, 0.5), ...]`, or as a `TransferFunction`.")
@@ -691,23 +678,9 @@ def _monotonic(values):
 
 
 def _read_names(answer, menu):
-    if _placeholder(answer):
-        return Feedback("unanswered", UNANSWERED)
     form = ("Give a list of map names from the table, e.g. `['viridis', 'grey']` (`[]` if none "
             "qualifies).")
-    if isinstance(answer, (str, bytes, dict)) or not isinstance(
-            answer, (list, tuple, set, frozenset, np.ndarray)):
-        return Feedback("invalid", form, "unreadable")
-    names = set()
-    for item in answer:
-        if not isinstance(item, str):
-            return Feedback("invalid", form, "unreadable")
-        name = item.strip().lower()
-        if name not in menu:
-            return Feedback("invalid", f"{item!r} is not in the table. The maps are: "
-                            + ", ".join(f"`{n}`" for n in menu) + ".", "unreadable")
-        names.add(name)
-    return names
+    return read_names(answer, menu, form, "is not in the table. The maps are:")
 
 
 class MonotonicMaps(_Chapter10):
@@ -855,7 +828,7 @@ class ChooseMapKind(_Chapter10):
         return True
 
     def _check(self, answer):
-        if _placeholder(answer):
+        if has_placeholder(answer):
             return Feedback("unanswered", UNANSWERED)
         if not isinstance(answer, str) or answer.strip().lower() not in self.menu:
             return Feedback("invalid", "Answer with one of the strings "

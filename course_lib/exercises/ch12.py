@@ -25,15 +25,14 @@ vectors that start at the surface point and point *away* from it (:math:`L` towa
 (one intensity for all three channels), so every intensity is one number.
 """
 import math
-from fractions import Fraction
 
 import numpy as np
 
 from .. import format as fmt
 from .. import shading
-from .core import (APART, ATOL, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake,
-                   data_note, diagnose_parts, gap, is_unanswered, pick, read_floats,
-                   well_separated)
+from .core import (DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, PartsAnswer,
+                   close, data_note, gap, hinted, is_unanswered, latex_fraction, latex_vector,
+                   pick, read_floats, well_separated)
 
 __all__ = [
     "EXERCISES",
@@ -52,6 +51,8 @@ __all__ = [
 ]
 
 _num = fmt.number
+_frac = latex_fraction
+_vec = latex_vector
 
 #: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
 _GENERIC = {"components differ", "wrong length", "opposite sign", "value differs"}
@@ -74,23 +75,6 @@ _INTEGER_VECTORS = (((0, 0, 2), 2), ((0, 0, 3), 3), ((0, 3, 4), 5), ((3, 0, 4), 
 # ---------------------------------------------------------------------------------------------
 # Helpers
 # ---------------------------------------------------------------------------------------------
-
-def _frac(x):
-    r"""A number as LaTeX: a short decimal when it has one, else a simple fraction (``\tfrac``)."""
-    x = float(x)
-    if abs(round(x, 3) - x) < 1e-12:
-        return _num(x)
-    f = Fraction(x).limit_denominator(64)
-    if abs(float(f) - x) > 1e-12:
-        return _num(x)
-    sign = "-" if f < 0 else ""
-    return rf"{sign}\tfrac{{{abs(f.numerator)}}}{{{f.denominator}}}"
-
-
-def _vec(v):
-    """A vector as LaTeX, its components as short decimals or simple fractions."""
-    return "(" + r",\ ".join(_frac(x) for x in np.ravel(v)) + ")"
-
 
 def _unit(v):
     v = np.asarray(v, dtype=float)
@@ -151,40 +135,6 @@ def _integer_vector(rng):
     return v + 0.0, float(length)
 
 
-def _hinted(feedback, hint):
-    """`feedback` with `hint` appended when no anticipated mistake explained the answer."""
-    if hint and feedback.status == "wrong" and feedback.diagnosis in _GENERIC:
-        return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
-    return feedback
-
-
-def _parts_separated(parts):
-    """Whether, number by number, the anticipated slips can be told apart.
-
-    A slip may give the right value of one number (then it is no slip for that number);
-    otherwise it must be at least APART from the right value and from the slips of other keys.
-    """
-    for _, expected, mistakes in parts:
-        live = []
-        for m in mistakes:
-            d = abs(float(m.value) - float(expected))
-            if d <= SAME:
-                continue
-            if d < APART:
-                return False
-            live.append(m)
-        for i, a in enumerate(live):
-            for b in live[i + 1:]:
-                if a.key != b.key and abs(float(a.value) - float(b.value)) < APART:
-                    return False
-    return True
-
-
-def _close(a, b):
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    return a.shape == b.shape and bool(np.allclose(a, b, rtol=1e-3, atol=ATOL))
-
-
 def _material_words(**coefficients):
     return ", ".join(rf"${name} = {_num(value)}$" for name, value in coefficients.items())
 
@@ -195,31 +145,17 @@ class _Chapter12(DrawnExercise):
     hint = ""
 
     def _check(self, answer):
-        return _hinted(self._judge(answer), self.hint)
+        return hinted(self._judge(answer), self.hint, _GENERIC)
 
     def _judge(self, answer):
         return super()._check(answer)
 
 
-class _Parts(_Chapter12):
-    """An answer made of several numbers, each with slips of its own (:func:`diagnose_parts`).
-
-    A subclass implements ``parts()``: a list of (name, expected value, list of Mistake).
-    """
-
-    answer_form = "custom"
-    what = "your answer"
-    form_hint = ""
-
-    def parts(self):
-        raise NotImplementedError
-
-    def separated(self, mistakes):
-        self._parts = self.parts()
-        return _parts_separated(self._parts)
+class _Parts(PartsAnswer, _Chapter12):
+    """An answer made of several numbers, each with slips of its own (see PartsAnswer)."""
 
     def _judge(self, answer):
-        return diagnose_parts(answer, self._parts, self.what, self.form_hint, self.hint)
+        return self.judge_parts(answer)
 
 
 _ONE_NUMBER = "**Answer:** one number. " + DECIMALS
@@ -699,7 +635,7 @@ class BlinnPhongHighlight(_Chapter12):
                             r"with $s = (N \cdot H)^n$.", "unreadable")
         pieces = {"the halfway vector H": values[:3], "the value s": values[3:]}
         wrong = [name for name, expected, _ in self._parts
-                 if not _close(pieces[name], expected)]
+                 if not close(pieces[name], expected)]
         if not wrong:
             return Feedback("correct", "The halfway vector and the highlight are right.")
         right = [name for name, _, _ in self._parts if name not in wrong]
@@ -708,7 +644,7 @@ class BlinnPhongHighlight(_Chapter12):
         for name, expected, found in self._parts:
             if name in wrong:
                 for m in found:
-                    if _close(pieces[name], m.value) and not _close(m.value, expected):
+                    if close(pieces[name], m.value) and not close(m.value, expected):
                         return Feedback("wrong", f"*{name[0].upper()}{name[1:]}:* "
                                         f"{m.explanation}{summary}", m.key)
         length = float(np.linalg.norm(values[:3]))

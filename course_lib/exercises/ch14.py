@@ -24,15 +24,15 @@ centre is at :math:`((j + \tfrac12)/W, (i + \tfrac12)/H)`; row 0 is at :math:`v 
 :math:`u = \tfrac12 + \operatorname{atan2}(x, z)/2\pi`, :math:`v = \tfrac12 + \arcsin(y/r)/\pi`
 (the compendium's formulas corrected); barycentric coordinates are ratios of **signed** areas.
 """
+import functools
 import math
-from fractions import Fraction
 
 import numpy as np
 
 from .. import format as fmt
 from .. import texturing
-from .core import (ATOL, DECIMALS, APART, SAME, DrawnExercise, Feedback, Mistake, data_note,
-                   diagnose_parts, pick)
+from .core import (ATOL, DECIMALS, DrawnExercise, Feedback, Mistake, PartsAnswer, data_note,
+                   hinted, latex_fraction, latex_vector, pick)
 
 __all__ = [
     "EXERCISES",
@@ -50,6 +50,8 @@ __all__ = [
 ]
 
 _num = fmt.number
+_frac = functools.partial(latex_fraction, max_denominator=1024)
+_vec = functools.partial(latex_vector, max_denominator=1024)
 
 #: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
 _GENERIC = {"components differ", "wrong length", "opposite sign", "value differs"}
@@ -66,57 +68,11 @@ _INTEGER_VECTORS = (((0, 3, 4), 5), ((3, 0, 4), 5), ((0, 4, 3), 5), ((4, 0, 3), 
 # Helpers
 # ---------------------------------------------------------------------------------------------
 
-def _frac(x):
-    r"""A number as LaTeX: a short decimal when it has one, else a simple fraction (``\tfrac``)."""
-    x = float(x)
-    if abs(round(x, 3) - x) < 1e-12:
-        return _num(x)
-    f = Fraction(x).limit_denominator(1024)
-    if abs(float(f) - x) > 1e-12:
-        return _num(x)
-    sign = "-" if f < 0 else ""
-    return rf"{sign}\tfrac{{{abs(f.numerator)}}}{{{f.denominator}}}"
-
-
-def _vec(v):
-    """A vector as LaTeX, its components as short decimals or simple fractions."""
-    return "(" + r",\ ".join(_frac(x) for x in np.ravel(v)) + ")"
-
-
-def _hinted(feedback, hint):
-    """`feedback` with `hint` appended when no anticipated mistake explained the answer."""
-    if hint and feedback.status == "wrong" and feedback.diagnosis in _GENERIC:
-        return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
-    return feedback
-
-
 def _floats_or_none(answer):
     try:
         return np.asarray(answer, dtype=float)
     except (TypeError, ValueError):
         return None
-
-
-def _parts_separated(parts):
-    """Whether, number by number, the anticipated slips can be told apart.
-
-    A slip may give the right value of one number (then it is no slip for that number);
-    otherwise it must be at least APART from the right value and from the slips of other keys.
-    """
-    for _, expected, mistakes in parts:
-        live = []
-        for m in mistakes:
-            d = abs(float(m.value) - float(expected))
-            if d <= SAME:
-                continue
-            if d < APART:
-                return False
-            live.append(m)
-        for i, a in enumerate(live):
-            for b in live[i + 1:]:
-                if a.key != b.key and abs(float(a.value) - float(b.value)) < APART:
-                    return False
-    return True
 
 
 def _texture_table(T):
@@ -142,7 +98,7 @@ class _Chapter14(DrawnExercise):
     hint = ""
 
     def _check(self, answer):
-        return _hinted(self._judge(answer), self.hint)
+        return hinted(self._judge(answer), self.hint, _GENERIC)
 
     def _judge(self, answer):
         feedback = super()._check(answer)
@@ -156,25 +112,11 @@ class _Chapter14(DrawnExercise):
         return feedback
 
 
-class _Parts(_Chapter14):
-    """An answer made of several numbers, each with slips of its own (:func:`diagnose_parts`).
-
-    A subclass implements ``parts()``: a list of (name, expected value, list of Mistake).
-    """
-
-    answer_form = "custom"
-    what = "your answer"
-    form_hint = ""
-
-    def parts(self):
-        raise NotImplementedError
-
-    def separated(self, mistakes):
-        self._parts = self.parts()
-        return _parts_separated(self._parts)
+class _Parts(PartsAnswer, _Chapter14):
+    """An answer made of several numbers, each with slips of its own (see PartsAnswer)."""
 
     def _judge(self, answer):
-        return diagnose_parts(answer, self._parts, self.what, self.form_hint, self.hint)
+        return self.judge_parts(answer)
 
 
 _ONE_NUMBER = "**Answer:** one number. " + DECIMALS

@@ -30,8 +30,7 @@ import numpy as np
 
 from .. import format as fmt
 from .. import raytracing as rt
-from .core import (APART, ATOL, DECIMALS, SAME, DrawnExercise, Feedback, Mistake, data_note,
-                   diagnose_parts, pick)
+from .core import (APART, DECIMALS, DrawnExercise, Mistake, PartsAnswer, data_note, hinted, pick)
 
 __all__ = [
     "EXERCISES",
@@ -67,59 +66,20 @@ def _nice_unit(rng):
     return v + 0.0
 
 
-def _hinted(feedback, hint):
-    """`feedback` with `hint` appended when no anticipated mistake explained the answer."""
-    if hint and feedback.status == "wrong" and feedback.diagnosis in _GENERIC:
-        return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
-    return feedback
-
-
-def _parts_separated(parts):
-    """Whether, number by number, the anticipated slips can be told apart (see ch07)."""
-    for _, expected, mistakes in parts:
-        live = []
-        for m in mistakes:
-            d = abs(float(m.value) - float(expected))
-            if d <= SAME:
-                continue
-            if d < APART:
-                return False
-            live.append(m)
-        for i, a in enumerate(live):
-            for b in live[i + 1:]:
-                if a.key != b.key and abs(float(a.value) - float(b.value)) < APART:
-                    return False
-    return True
-
-
 class _Chapter15(DrawnExercise):
     """The chapter's base: an answer that no anticipated slip explains gets ``hint``."""
 
     hint = ""
 
     def _check(self, answer):
-        return _hinted(super()._check(answer), self.hint)
+        return hinted(super()._check(answer), self.hint, _GENERIC)
 
 
-class _Parts(_Chapter15):
-    """An answer made of several numbers, each with slips of its own (:func:`diagnose_parts`).
-
-    A subclass implements ``parts()``: a list of (name, expected value, list of Mistake).
-    """
-
-    answer_form = "custom"
-    what = "your answer"
-    form_hint = ""
-
-    def parts(self):
-        raise NotImplementedError
-
-    def separated(self, mistakes):
-        self._parts = self.parts()
-        return _parts_separated(self._parts)
+class _Parts(PartsAnswer, _Chapter15):
+    """An answer made of several numbers, each with slips of its own (see PartsAnswer)."""
 
     def _check(self, answer):
-        return diagnose_parts(answer, self._parts, self.what, self.form_hint, self.hint)
+        return self.judge_parts(answer)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -30,7 +30,7 @@ import numpy as np
 from .. import format as fmt
 from .. import scivis
 from .core import (APART, ATOL, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake,
-                   data_note, is_unanswered, pick, read_floats)
+                   data_note, has_placeholder, hinted, pick, read_floats)
 
 __all__ = [
     "CompositeFrontToBack",
@@ -54,19 +54,6 @@ _GENERIC = {"components differ", "wrong length", "opposite sign", "value differs
             "entries differ", "scaled", "sign", "transposed"}
 
 
-def _hinted(feedback, hint):
-    """`feedback` with `hint` appended when no anticipated mistake explained the answer."""
-    if hint and feedback.status == "wrong" and feedback.diagnosis in _GENERIC:
-        return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
-    return feedback
-
-
-def _placeholder(answer):
-    """True for `...`, None, and a list or tuple with a `...` in it."""
-    return is_unanswered(answer) or (isinstance(answer, (list, tuple))
-                                     and any(a is Ellipsis for a in answer))
-
-
 class _Chapter18(DrawnExercise):
     """The chapter's base: an answer no anticipated slip explains gets ``hint``.
 
@@ -87,7 +74,7 @@ class _Chapter18(DrawnExercise):
                                                                 rtol=1e-3, atol=ATOL))]
             feedback = Feedback("wrong", f"Components {off} (counted from 0) of {self.what} "
                                 "are off.", "components differ")
-        return _hinted(feedback, self.hint)
+        return hinted(feedback, self.hint, _GENERIC)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -257,7 +244,7 @@ class SquareCrossings(_Chapter18):
         return [m for m in mistakes if _pair_gap(m.value, self.expected) > SAME]
 
     def _check(self, answer):
-        if _placeholder(answer):
+        if has_placeholder(answer):
             return Feedback("unanswered", UNANSWERED)
         value = read_floats(answer)
         if value is None or value.shape != (2, 2):
@@ -291,7 +278,7 @@ class SquareCrossings(_Chapter18):
 
 def _read_edge_pairs(answer):
     """A set of two frozensets of edges from a list of two edge pairs, or a Feedback."""
-    if _placeholder(answer) or (isinstance(answer, (list, tuple)) and any(
+    if has_placeholder(answer) or (isinstance(answer, (list, tuple)) and any(
             isinstance(a, (list, tuple)) and any(b is Ellipsis for b in a) for a in answer)):
         return Feedback("unanswered", UNANSWERED)
     form = ("Give the two segments as a list of two pairs of edge numbers, e.g. "

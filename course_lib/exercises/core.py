@@ -22,6 +22,7 @@ draw numbers that are pleasant by hand and to write the statement.
 """
 import math
 import zlib
+from fractions import Fraction
 
 import numpy as np
 
@@ -32,15 +33,23 @@ __all__ = [
     "Exercise",
     "Feedback",
     "Mistake",
+    "PartsAnswer",
+    "close",
     "data_note",
     "diagnose_matrix",
     "diagnose_number",
     "diagnose_parts",
     "diagnose_vector",
     "gap",
+    "has_placeholder",
+    "hinted",
     "is_unanswered",
+    "latex_fraction",
+    "latex_vector",
+    "parts_separated",
     "pick",
     "read_floats",
+    "read_names",
     "small_ints",
     "well_separated",
 ]
@@ -898,3 +907,274 @@ def data_note(*names):
     """
     listed = ", ".join(f"`.{name}`" for name in names)
     return f"*The numbers of this question are the attributes {listed} of the exercise object.*"
+
+
+def parts_separated(parts, same=SAME, apart=APART):
+    """Whether, number by number, the anticipated slips of a multi-part answer can be told apart.
+
+    Parameters
+    ----------
+    parts : sequence of (label, expected, mistakes)
+        As for :func:`diagnose_parts`: each number's right value and its anticipated
+        :class:`Mistake` values.
+    same : float or None
+        A slip within `same` of the right value of a number is no slip for that number and is
+        passed over. None: no slip may give the right value (it must be `apart` from it).
+    apart : float
+        How far every remaining slip must be from the right value and from the slips of
+        other keys.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> parts_separated([("x", 1.0, [Mistake(2.0, "", "a"), Mistake(3.0, "", "b")])])
+    True
+    >>> parts_separated([("x", 1.0, [Mistake(2.0, "", "a"), Mistake(2.01, "", "b")])])
+    False
+    >>> right_too = [("x", 1.0, [Mistake(1.0, "", "a")])]
+    >>> parts_separated(right_too), parts_separated(right_too, same=None)
+    (True, False)
+    """
+    for _, expected, mistakes in parts:
+        live = []
+        for m in mistakes:
+            d = abs(float(m.value) - float(expected))
+            if same is not None and d <= same:
+                continue
+            if d < apart:
+                return False
+            live.append(m)
+        for i, a in enumerate(live):
+            for b in live[i + 1:]:
+                if a.key != b.key and abs(float(a.value) - float(b.value)) < apart:
+                    return False
+    return True
+
+
+def hinted(feedback, hint, generic):
+    """`feedback` with `hint` appended when no anticipated mistake explained a wrong answer.
+
+    Parameters
+    ----------
+    feedback : Feedback
+    hint : str or None
+        What to add (how to get the answer right); nothing is added when it is empty.
+    generic : set of str
+        The diagnoses that name no anticipated slip (such as ``"components differ"``).
+
+    Returns
+    -------
+    Feedback
+
+    Examples
+    --------
+    >>> fb = Feedback("wrong", "Not this.", "value differs")
+    >>> hinted(fb, "Divide by the length.", {"value differs"}).message
+    'Not this. Divide by the length.'
+    >>> hinted(Feedback("wrong", "Transposed.", "transposed"), "Divide.", {"value differs"}).message
+    'Transposed.'
+    """
+    if hint and feedback.status == "wrong" and feedback.diagnosis in generic:
+        return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
+    return feedback
+
+
+def close(a, b, atol=ATOL, rtol=1e-3):
+    """Whether two answers have the same shape and agree within the tolerances.
+
+    Parameters
+    ----------
+    a, b : array_like
+    atol, rtol : float
+        Absolute and relative tolerance, as for :func:`numpy.allclose`.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> close([1, 2], [1, 2.001]), close([1, 2], [1, 2.1]), close([1, 2], [1, 2, 3])
+    (True, False, False)
+    """
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and bool(np.allclose(a, b, rtol=rtol, atol=atol))
+
+
+def has_placeholder(answer, none_inside=False):
+    """True for a placeholder answer, or a list or tuple with a ``...`` in it.
+
+    Parameters
+    ----------
+    answer : object
+    none_inside : bool
+        Also count a None inside the list or tuple as a placeholder.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> has_placeholder(...), has_placeholder([1, ...]), has_placeholder([1, 2])
+    (True, True, False)
+    >>> has_placeholder([1, None]), has_placeholder([1, None], none_inside=True)
+    (False, True)
+    """
+    if is_unanswered(answer):
+        return True
+    if not isinstance(answer, (list, tuple)):
+        return False
+    inside = is_unanswered if none_inside else (lambda a: a is Ellipsis)
+    return any(inside(a) for a in answer)
+
+
+class PartsAnswer:
+    r"""Mixin for a :class:`DrawnExercise` whose answer is several numbers with slips of their own.
+
+    Put it before the exercise base class. A subclass implements ``parts()``: a list of
+    (name, expected value, list of :class:`Mistake`), as for :func:`diagnose_parts`; the parts
+    are computed when a variant is drawn (the variant is kept only if
+    :func:`parts_separated`), and ``judge_parts(answer)`` gives the feedback (call it from the
+    exercise's ``_check``). ``what`` names the whole answer and ``form_hint`` says what to type;
+    ``self.hint`` (how to get the numbers right) ends the feedback on unexplained numbers.
+
+    Examples
+    --------
+    >>> class SumProduct(PartsAnswer, DrawnExercise):
+    ...     title = "Sum and product"
+    ...     hint = ""
+    ...     def draw(self, rng):
+    ...         self.a, self.b = int(rng.integers(2, 6)), int(rng.integers(7, 10))
+    ...     def parts(self):
+    ...         s, p = self.a + self.b, self.a * self.b
+    ...         return [("the sum", s, []),
+    ...                 ("the product", p, [Mistake(s, "That is the sum.", "added")])]
+    ...     def statement(self):
+    ...         return f"Give the sum and the product of {self.a} and {self.b}."
+    ...     def _check(self, answer):
+    ...         return self.judge_parts(answer)
+    >>> ex = SumProduct(seed=0)
+    >>> s = ex.a + ex.b
+    >>> ex.check([s, ex.a * ex.b]).status, ex.check([s, s]).diagnosis
+    ('correct', 'added')
+    """
+
+    answer_form = "custom"
+    what = "your answer"
+    form_hint = ""
+
+    def parts(self):
+        """The numbers of the answer: a list of (name, expected value, list of Mistake)."""
+        raise NotImplementedError
+
+    def separated(self, mistakes):
+        """Compute the parts of the drawn variant; whether their slips can be told apart."""
+        self._parts = self.parts()
+        return parts_separated(self._parts)
+
+    def judge_parts(self, answer):
+        """The feedback on `answer` by :func:`diagnose_parts`."""
+        return diagnose_parts(answer, self._parts, self.what, self.form_hint, self.hint)
+
+
+def latex_fraction(x, max_denominator=64):
+    r"""A number as LaTeX: a short decimal when it has one, else a simple fraction (``\tfrac``).
+
+    Parameters
+    ----------
+    x : float
+    max_denominator : int
+        The largest denominator a fraction may have; a number that is no such fraction (to
+        1e-12) is written as a decimal.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> latex_fraction(0.25), latex_fraction(1 / 3), latex_fraction(-2 / 7)
+    ('0.25', '\\tfrac{1}{3}', '-\\tfrac{2}{7}')
+    >>> latex_fraction(1 / 127), latex_fraction(1 / 127, max_denominator=1024)
+    ('0.008', '\\tfrac{1}{127}')
+    """
+    x = float(x)
+    if abs(round(x, 3) - x) < 1e-12:
+        return fmt.number(x)
+    f = Fraction(x).limit_denominator(max_denominator)
+    if abs(float(f) - x) > 1e-12:
+        return fmt.number(x)
+    sign = "-" if f < 0 else ""
+    return rf"{sign}\tfrac{{{abs(f.numerator)}}}{{{f.denominator}}}"
+
+
+def latex_vector(v, max_denominator=64):
+    r"""A vector as LaTeX, its components as short decimals or simple fractions.
+
+    Parameters
+    ----------
+    v : array_like
+    max_denominator : int
+        As for :func:`latex_fraction`.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> print(latex_vector([0.5, 1 / 3, 2]))
+    (0.5,\ \tfrac{1}{3},\ 2)
+    """
+    return "(" + r",\ ".join(latex_fraction(x, max_denominator) for x in np.ravel(v)) + ")"
+
+
+def read_names(answer, menu, form, not_listed, normalise=None):
+    """An answer that is a list of names from a menu, as a set, or a Feedback saying why not.
+
+    Parameters
+    ----------
+    answer : object
+    menu : sequence of str
+        The names that may be given (listed in the feedback on a name not in it).
+    form : str
+        What to type, for an answer that is no list of strings.
+    not_listed : str
+        What follows the quoted name that is not on the menu, up to the list of the names
+        (e.g. ``"is not on the menu. The names are:"``).
+    normalise : callable or None
+        Turns a typed name into its menu spelling; None: strip and lower-case it.
+
+    Returns
+    -------
+    set of str or Feedback
+        "unanswered" for a placeholder, "invalid" (diagnosis ``"unreadable"``) otherwise.
+
+    Examples
+    --------
+    >>> sorted(read_names(["Red ", "blue"], ("red", "blue"), "A list.", "is no colour:"))
+    ['blue', 'red']
+    >>> print(read_names(["green"], ("red", "blue"), "A list.", "is no colour:"))
+    Cannot read your answer: 'green' is no colour: `red`, `blue`.
+    >>> read_names("red", ("red",), "A list.", "is no colour:").message
+    'A list.'
+    """
+    if has_placeholder(answer):
+        return Feedback("unanswered", UNANSWERED)
+    if isinstance(answer, (str, bytes, dict)) or not isinstance(
+            answer, (list, tuple, set, frozenset, np.ndarray)):
+        return Feedback("invalid", form, "unreadable")
+    names = set()
+    for item in answer:
+        if not isinstance(item, str):
+            return Feedback("invalid", form, "unreadable")
+        name = item.strip().lower() if normalise is None else normalise(item)
+        if name not in menu:
+            return Feedback("invalid", f"{item!r} {not_listed} "
+                            + ", ".join(f"`{n}`" for n in menu) + ".", "unreadable")
+        names.add(name)
+    return names
