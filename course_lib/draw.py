@@ -19,6 +19,7 @@ __all__ = [
     "frame_3d",
     "lecture_scale",
     "mesh_3d",
+    "offscreen_plotter",
     "set_frame_3d",
     "set_mesh_3d",
     "setup_axes_2d",
@@ -46,6 +47,38 @@ def configure_offscreen_vtk():
     """
     if sys.platform.startswith("linux") and not os.environ.get("DISPLAY"):
         os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+
+
+def offscreen_plotter(width, height):
+    """A pyvista plotter that renders off screen (through EGL without a display) on white.
+
+    The 3D explorers draw their scene into it and show ``plotter.screenshot()`` as a picture.
+    Its size follows :func:`lecture_scale`, like the matplotlib figures.
+
+    Parameters
+    ----------
+    width, height : int
+        Size of the picture in pixels at the laptop scale.
+
+    Returns
+    -------
+    pyvista.Plotter
+
+    Examples
+    --------
+    >>> plotter = offscreen_plotter(120, 90)
+    >>> tuple(plotter.window_size)
+    (120, 90)
+    >>> plotter.close()
+    """
+    configure_offscreen_vtk()
+    import pyvista as pv
+
+    scale = lecture_scale()
+    plotter = pv.Plotter(off_screen=True,
+                         window_size=(round(width * scale), round(height * scale)))
+    plotter.set_background("white")
+    return plotter
 
 
 #: the environment variable of lecture mode (``make lecture`` sets it): "1" for the default

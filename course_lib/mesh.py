@@ -609,6 +609,23 @@ class _Topology:
 # Half-edge mesh
 # ---------------------------------------------------------------------------------------------
 
+def _walk_loops(start_elements, successor):
+    """The cycles of `successor` through `start_elements` (each element in one cycle, listed
+    once): the boundary loops of a half-edge or winged-edge structure."""
+    seen = np.zeros(len(successor), dtype=bool)
+    loops = []
+    for first in start_elements:
+        if seen[first]:
+            continue
+        loop, k = [], int(first)
+        while not seen[k]:
+            seen[k] = True
+            loop.append(k)
+            k = int(successor[k])
+        loops.append(loop)
+    return loops
+
+
 class HalfEdgeMesh(_Topology):
     """A polygon mesh as half-edges: every edge split into two directed halves, one per side.
 
@@ -949,19 +966,8 @@ class HalfEdgeMesh(_Topology):
         >>> HalfEdgeMesh.from_faces(*disc(rings=1, segments=6)).boundary_loops()
         [[2, 1, 6, 5, 4, 3]]
         """
-        border = np.flatnonzero(self.face < 0)
-        seen = np.zeros(len(self.origin), dtype=bool)
-        loops = []
-        for h0 in border:
-            if seen[h0]:
-                continue
-            loop, h = [], int(h0)
-            while not seen[h]:
-                seen[h] = True
-                loop.append(h)
-                h = int(self.next[h])
-            loops.append(loop if half_edges else [int(self.origin[x]) for x in loop])
-        return loops
+        loops = _walk_loops(np.flatnonzero(self.face < 0), self.next)
+        return loops if half_edges else [[int(self.origin[h]) for h in loop] for loop in loops]
 
     def to_faces(self):
         """The face list again, read from the structure by walking ``next`` around each face.
@@ -1273,19 +1279,8 @@ class WingedEdgeMesh(_Topology):
         >>> WingedEdgeMesh.from_faces(*disc(rings=1, segments=6)).boundary_loops()
         [[2, 1, 6, 5, 4, 3]]
         """
-        border = np.flatnonzero(self.right_face < 0)
-        seen = np.zeros(len(self.start), dtype=bool)
-        loops = []
-        for e0 in border:
-            if seen[e0]:
-                continue
-            loop, e = [], int(e0)
-            while not seen[e]:
-                seen[e] = True
-                loop.append(e)
-                e = int(self.right_next[e])
-            loops.append(loop if edges else [int(self.end[x]) for x in loop])
-        return loops
+        loops = _walk_loops(np.flatnonzero(self.right_face < 0), self.right_next)
+        return loops if edges else [[int(self.end[e]) for e in loop] for loop in loops]
 
     def to_faces(self):
         """The face list again, walking each face's edges (list of lists; array if all same size).

@@ -649,8 +649,7 @@ class IsosurfaceExplorer(Explorer):
         self.pv = pv
         self.state = state or State3D()
         s = scene_3d(self.state)
-        self.plotter = pv.Plotter(off_screen=True, window_size=(420, 380))
-        self.plotter.set_background("white")
+        self.plotter = draw.offscreen_plotter(420, 380)
         # start from a placeholder triangle and a placeholder line (pyvista refuses empty meshes);
         # _draw replaces their contents and hides whichever is empty
         self.mesh = pv.PolyData(np.eye(3), _faces(np.array([[0, 1, 2]])))

@@ -128,8 +128,7 @@ class SimplificationExplorer(Explorer):
 
         self.state = state or State()
         s = scene(self.state)
-        self.plotter = pv.Plotter(off_screen=True, window_size=(420, 380))
-        self.plotter.set_background("white")
+        self.plotter = draw.offscreen_plotter(420, 380)
         self.poly = pv.PolyData(s["vertices"], _cells(s["faces"]))
         self.poly["error"] = s["errors"]
         self.plotter.add_mesh(self.poly, scalars="error", cmap="viridis",

@@ -155,8 +155,7 @@ class SurfaceExplorer(Explorer):
 
         self.state = state or State()
         s = scene(self.state)
-        self.plotter = pv.Plotter(off_screen=True, window_size=(440, 360))
-        self.plotter.set_background("white")
+        self.plotter = draw.offscreen_plotter(440, 360)
         self.patch = pv.StructuredGrid(*[s["surface"][..., k] for k in range(3)])
         self.patch["moved"] = s["changed"].ravel(order="F").astype(float)
         self.plotter.add_mesh(self.patch, scalars="moved", cmap=["#f5a623", "#4a90d9"],

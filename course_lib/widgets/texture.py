@@ -416,8 +416,7 @@ class TextureExplorer(Explorer):
 
         self.state = state or State()
         s = scene(self.state)
-        self.plotter = pv.Plotter(off_screen=True, window_size=(400, 340))
-        self.plotter.set_background("white")
+        self.plotter = draw.offscreen_plotter(400, 340)
         # no multisampling: in software OpenGL it triples the time of every frame
         self.plotter.disable_anti_aliasing()
         self.grids, self.actors = {}, {}
