@@ -182,7 +182,34 @@ def figure(figsize=(4.5, 4.5), dpi=90, **kwargs):
         # that window reaches the browser as a broken image (a console error). The explorers
         # carry their own picture for readers without a kernel, so the copy is not needed.
         canvas.syncing_data_url = False
+    if hasattr(canvas, "get_diff_image"):
+        canvas.get_diff_image = _fast_png(canvas.get_diff_image)
     return fig
+
+
+def _fast_png(get_diff_image):
+    """`get_diff_image` encoding its PNG with zlib level 1 instead of 6.
+
+    Every widget update ends with ipympl encoding the changed pixels as a PNG for the browser;
+    at the default level that encoding is the largest single cost of an update (18 ms of the
+    Phong explorer's 53). Level 1 halves it for a 25 % larger message on a local connection.
+    Only PNGs encoded inside this canvas's call are affected."""
+    def fast(*args, **kwargs):
+        from PIL import Image
+
+        save = Image.Image.save
+
+        def save_fast(self, fp, format=None, **params):
+            if str(format).lower() == "png":
+                params.setdefault("compress_level", 1)
+            return save(self, fp, format, **params)
+
+        Image.Image.save = save_fast
+        try:
+            return get_diff_image(*args, **kwargs)
+        finally:
+            Image.Image.save = save
+    return fast
 
 
 def setup_axes_2d(ax, limits, title=None, grid=True):
