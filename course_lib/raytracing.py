@@ -132,6 +132,7 @@ import numpy as np
 
 from . import shading, viewing
 from ._validate import as_array, as_points, as_scalar, as_vector, broadcast_stacks
+from .visibility import _moller_trumbore_soa as _moller_trumbore
 
 __all__ = [
     "BVH",
@@ -783,30 +784,6 @@ class TriangleHits(NamedTuple):
     normals: np.ndarray
     triangle_tests: int
     box_tests: int
-
-
-def _moller_trumbore(o, d, tri):
-    r"""(t, u, v) of rays against triangles, component by component; t = inf on a miss.
-
-    `o` and `d` are sequences of 3 arrays (x, y, z), `tri` a sequence of 9 arrays
-    (v0, e1 = v1 - v0, e2 = v2 - v0); all broadcast. Written out per component so that a
-    (ray, triangle) pair goes through the same floating-point operations whatever the batching:
-    the BVH and brute force then agree bit for bit.
-    """
-    dx, dy, dz = d[0], d[1], d[2]
-    ax, ay, az = tri[3], tri[4], tri[5]
-    bx, by, bz = tri[6], tri[7], tri[8]
-    px, py, pz = dy * bz - dz * by, dz * bx - dx * bz, dx * by - dy * bx       # d x e2
-    det = ax * px + ay * py + az * pz
-    tx, ty, tz = o[0] - tri[0], o[1] - tri[1], o[2] - tri[2]                    # s = o - v0
-    qx, qy, qz = ty * az - tz * ay, tz * ax - tx * az, tx * ay - ty * ax       # s x e1
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        inv = 1.0 / det
-        u = (tx * px + ty * py + tz * pz) * inv
-        v = (dx * qx + dy * qy + dz * qz) * inv
-        t = (bx * qx + by * qy + bz * qz) * inv
-        hit = (det != 0) & (u >= 0) & (v >= 0) & (u + v <= 1)
-    return np.where(hit, t, np.inf), u, v
 
 
 def _triangles(value, name="triangles"):

@@ -679,18 +679,30 @@ class Hits(NamedTuple):
 
 
 def _moller_trumbore(o, d, v0, e1, e2):
-    """Ray parameter of the hit of rays (o, d) with triangles (v0, e1, e2), inf on a miss.
+    """(t, u, v) of rays (o, d) against triangles (v0, e1, e2), t = inf on a miss.
 
-    All arguments broadcast (last axis 3). Written component by component so that each
-    (ray, triangle) pair is computed by the same floating-point operations whatever the
-    batching: brute force and the BVH then agree bit for bit.
+    All arguments broadcast (last axis 3); see :func:`_moller_trumbore_soa`.
     """
-    dx, dy, dz = d[..., 0], d[..., 1], d[..., 2]
-    ax, ay, az = e1[..., 0], e1[..., 1], e1[..., 2]
-    bx, by, bz = e2[..., 0], e2[..., 1], e2[..., 2]
+    return _moller_trumbore_soa((o[..., 0], o[..., 1], o[..., 2]),
+                                (d[..., 0], d[..., 1], d[..., 2]),
+                                (v0[..., 0], v0[..., 1], v0[..., 2], e1[..., 0], e1[..., 1],
+                                 e1[..., 2], e2[..., 0], e2[..., 1], e2[..., 2]))
+
+
+def _moller_trumbore_soa(o, d, tri):
+    """(t, u, v) of rays against triangles, component by component; t = inf on a miss.
+
+    `o` and `d` are sequences of 3 arrays (x, y, z), `tri` a sequence of 9 arrays
+    (v0, e1 = v1 - v0, e2 = v2 - v0); all broadcast. Written out per component so that each
+    (ray, triangle) pair goes through the same floating-point operations whatever the batching:
+    brute force and a BVH then agree bit for bit (also used by :mod:`course_lib.raytracing`).
+    """
+    dx, dy, dz = d[0], d[1], d[2]
+    ax, ay, az = tri[3], tri[4], tri[5]
+    bx, by, bz = tri[6], tri[7], tri[8]
     px, py, pz = dy * bz - dz * by, dz * bx - dx * bz, dx * by - dy * bx       # d x e2
     det = ax * px + ay * py + az * pz
-    tx, ty, tz = o[..., 0] - v0[..., 0], o[..., 1] - v0[..., 1], o[..., 2] - v0[..., 2]
+    tx, ty, tz = o[0] - tri[0], o[1] - tri[1], o[2] - tri[2]                    # s = o - v0
     qx, qy, qz = ty * az - tz * ay, tz * ax - tx * az, tx * ay - ty * ax       # s x e1
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         inv = 1.0 / det
