@@ -23,6 +23,7 @@ CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic
                   "--no-first-run", "--disable-background-networking",
                   "--disable-component-update", "--disable-sync"]
 ARTIFACTS = ROOT / "test-artifacts" / "browser"
+IDLE_KERNEL = ".jp-Notebook-ExecutionIndicator[data-status='idle']"
 
 
 def free_port():
@@ -138,7 +139,7 @@ class NotebookPage:
             if dialog.count():
                 dialog.first.click()
             name = self.page.locator(".jp-KernelName").all_text_contents()
-            idle = self.page.locator(".jp-Notebook-ExecutionIndicator[data-status='idle']")
+            idle = self.page.locator(IDLE_KERNEL)
             if idle.count() and name and "No Kernel" not in name[0] and name[0].strip():
                 return self
             time.sleep(0.5)
@@ -165,8 +166,7 @@ class NotebookPage:
                 break
             # an error stops "Run All": nothing queued, kernel idle, yet cells not run
             queued = any("*" in p for p in prompts)
-            idle = self.page.locator(
-                ".jp-Notebook-ExecutionIndicator[data-status='idle']").count() > 0
+            idle = self.page.locator(IDLE_KERNEL).count() > 0
             stalled = stalled + 1 if done and not queued and idle else 0
             if stalled >= 10:
                 raise RuntimeError(f"{self.path}: Run All stopped after {len(done)} of "
@@ -174,8 +174,7 @@ class NotebookPage:
             time.sleep(0.5)
         else:
             raise TimeoutError(f"{self.path}: not every cell ran within {timeout / 1000:.0f} s")
-        self.page.wait_for_selector(".jp-Notebook-ExecutionIndicator[data-status='idle']",
-                                    timeout=timeout)
+        self.page.wait_for_selector(IDLE_KERNEL, timeout=timeout)
         self.wait_for_widgets()
         return self
 

@@ -5,10 +5,9 @@ from pathlib import Path
 
 import pytest
 
-from .lab import ROOT, NotebookPage, expected_widget_cells
+from .lab import ROOT, WIDGET_VIEW, NotebookPage, expected_widget_cells
 
 LESSONS = sorted(p.relative_to(ROOT).as_posix() for p in (ROOT / "notebooks").glob("*.ipynb"))
-WIDGET_VIEW = ".jp-OutputArea-output > .jupyter-widgets"      # the root view of a widget
 
 
 @pytest.mark.parametrize("path", LESSONS, ids=lambda p: Path(p).stem)
