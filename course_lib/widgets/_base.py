@@ -1,10 +1,87 @@
-"""What every explorer shares: its display (with and without a live kernel) and layout helpers."""
+"""What every explorer shares: its display (with and without a live kernel), layout helpers, and
+the rule that widget messages are handled on the kernel's main thread."""
 import base64
+import contextvars
+import functools
 import io
+import threading
+
+import numpy as np
 
 from .. import draw
 
-__all__ = ["Explorer", "beside", "degree_sliders", "figure_3d"]
+__all__ = ["Explorer", "beside", "degree_sliders", "figure_3d", "handle_comms_on_main_thread"]
+
+_COMM_MESSAGES = ("comm_open", "comm_msg", "comm_close")
+
+
+def handle_comms_on_main_thread(kernel=None):
+    """Have the running IPython kernel handle every widget (comm) message on its main thread.
+
+    JupyterLab 4.6 sends widget messages to *kernel subshells* by default (its setting
+    ``commsOverSubshells`` is ``perCommTarget``), and ipykernel 7 runs each subshell in a thread
+    of its own. A slider's callback then runs on a thread other than the one that made the
+    explorer's figure. matplotlib is not thread-safe, and an OpenGL context belongs to the
+    thread that created it: VTK, asked to render from another thread, draws black frames,
+    prints "handleless buffer" errors and can abort the kernel.
+
+    This wraps the kernel's three comm handlers so that a message arriving on a subshell thread
+    is handed to the main thread's event loop and handled there, in the order received, with
+    the message as its parent (so replies and outputs are routed as before). Every widget of
+    the kernel then behaves as with ``commsOverSubshells`` set to ``disabled``, whatever the
+    setting; what is lost is only that a widget answers while a cell is still running.
+    Importing :mod:`course_lib.widgets` calls it; calling it again changes nothing.
+
+    Parameters
+    ----------
+    kernel : ipykernel.kernelbase.Kernel, optional
+        Default: the running kernel, if there is one.
+
+    Returns
+    -------
+    bool
+        True if the handlers of a kernel are (now) wrapped, False outside a kernel.
+
+    Examples
+    --------
+    >>> handle_comms_on_main_thread()      # a doctest runs outside any kernel
+    False
+    """
+    if kernel is None:
+        try:
+            from ipykernel.kernelbase import Kernel
+        except ImportError:                       # pragma: no cover - ipykernel comes with lab
+            return False
+        if not Kernel.initialized():
+            return False
+        kernel = Kernel.instance()
+    handlers = getattr(kernel, "shell_handlers", None)
+    loop = getattr(kernel, "io_loop", None)
+    if handlers is None or loop is None:
+        return False
+    for msg_type in _COMM_MESSAGES:
+        handler = handlers.get(msg_type)
+        if handler is not None and not getattr(handler, "_on_main_thread", False):
+            handlers[msg_type] = _on_main_thread(handler, loop, threading.main_thread())
+    return True
+
+
+def _on_main_thread(handler, loop, main):
+    """`handler(stream, ident, msg)`, run on thread `main` by its event loop `loop`.
+
+    The wrapper counts the messages it handed over in its attribute ``forwarded`` (the browser
+    tests read it to prove that JupyterLab really sent messages to a subshell)."""
+    @functools.wraps(handler)
+    def forward(stream, ident, msg):
+        if threading.current_thread() is main:
+            return handler(stream, ident, msg)
+        forward.forwarded += 1
+        # the context carries the message as the kernel's parent (set by the subshell)
+        loop.add_callback(contextvars.copy_context().run, handler, stream, ident, msg)
+        return None
+    forward._on_main_thread = True
+    forward.forwarded = 0
+    return forward
 
 
 def figure_3d(radius, title, size=4.3):
@@ -88,6 +165,58 @@ class Explorer:
 
     def update(self):  # pragma: no cover - every subclass overrides it
         raise NotImplementedError
+
+    def mouse_gestures(self):
+        """What a student can do with the mouse on this explorer's figure, one gesture each.
+
+        Every draggable set of points gives a ``"drag"`` of its first point a little towards
+        the middle of its axes; every 3D axes a ``"turn"`` (a horizontal drag across it, which
+        turns the view). Explorers that answer a click add a ``"click"``. Positions are
+        fractions of the figure's canvas with y pointing down, as a browser measures them; the
+        browser tests and benchmarks perform these gestures with a real mouse.
+
+        Returns
+        -------
+        list of dict
+            ``{"kind": "drag" | "turn" | "click", "what": str, "start": (x, y), "end": (x, y)}``
+            (a click has ``end == start``).
+
+        Examples
+        --------
+        >>> from course_lib.widgets.bezier import BezierExplorer
+        >>> [g["kind"] for g in BezierExplorer().mouse_gestures()]
+        ['drag']
+        >>> from course_lib.widgets.gimbal import GimbalExplorer
+        >>> [g["kind"] for g in GimbalExplorer().mouse_gestures()]
+        ['turn']
+        """
+        from ._drag import DraggablePoints
+
+        if self.fig is None:
+            return []
+        gestures = []
+        for name, value in vars(self).items():
+            if isinstance(value, DraggablePoints) and len(value.points):
+                x0, x1 = value.ax.get_xlim()
+                y0, y1 = value.ax.get_ylim()
+                start = value.points[0]
+                end = start + 0.25 * (np.array([(x0 + x1) / 2, (y0 + y1) / 2]) - start)
+                gestures.append({"kind": "drag", "what": f"{name}: point 0",
+                                 "start": self._canvas_fraction(value.ax, start),
+                                 "end": self._canvas_fraction(value.ax, end)})
+        for k, ax in enumerate(self.fig.axes):
+            if ax.name == "3d":
+                box = ax.get_position()
+                y = float(1.0 - (box.y0 + box.y1) / 2)
+                gestures.append({"kind": "turn", "what": f"3D axes {k}",
+                                 "start": (float(box.x0 + 0.35 * box.width), y),
+                                 "end": (float(box.x0 + 0.65 * box.width), y)})
+        return gestures
+
+    def _canvas_fraction(self, ax, xy):
+        """Where data point `xy` of `ax` lies on the canvas: fractions, y down."""
+        x, y = ax.transData.transform(np.asarray(xy, dtype=float))
+        return (float(x / self.fig.bbox.width), float(1.0 - y / self.fig.bbox.height))
 
     def png(self, dpi=72):
         """The figure in its current state as PNG bytes (None without a figure).

@@ -367,6 +367,20 @@ class RayTreeExplorer(Explorer):
     def _key(self):
         return (self.state.kind, self.state.max_depth, self.state.shadows)
 
+    def mouse_gestures(self):
+        """The base class's gestures, and a click on the rendered image (picks that pixel).
+
+        Examples
+        --------
+        >>> [g["kind"] for g in RayTreeExplorer().mouse_gestures()]
+        ['turn', 'click']
+        """
+        x0, x1 = self.ax_image.get_xlim()
+        y0, y1 = self.ax_image.get_ylim()
+        pixel = self._canvas_fraction(self.ax_image, (x0 + 0.3 * (x1 - x0), y0 + 0.6 * (y1 - y0)))
+        return super().mouse_gestures() + [{"kind": "click", "what": "a pixel of the image",
+                                            "start": pixel, "end": pixel}]
+
     def _on_click(self, event):
         if event.inaxes is not self.ax_image or event.xdata is None:
             return
