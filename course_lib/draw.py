@@ -183,20 +183,29 @@ def figure(figsize=(4.5, 4.5), dpi=90, **kwargs):
         # carry their own picture for readers without a kernel, so the copy is not needed.
         canvas.syncing_data_url = False
     if hasattr(canvas, "get_diff_image"):
-        canvas.get_diff_image = _fast_png(canvas.get_diff_image)
+        canvas.get_diff_image = _whole_frames(canvas, canvas.get_diff_image)
     return fig
 
 
-def _fast_png(get_diff_image):
-    """`get_diff_image` encoding its PNG with zlib level 1 instead of 6.
+def _whole_frames(canvas, get_diff_image):
+    """`get_diff_image` sending every frame whole, its PNG encoded with zlib level 1.
 
-    Every widget update ends with ipympl encoding the changed pixels as a PNG for the browser;
-    at the default level that encoding is the largest single cost of an update (18 ms of the
-    Phong explorer's 53). Level 1 halves it for a 25 % larger message on a local connection.
-    Only PNGs encoded inside this canvas's call are affected."""
-    def fast(*args, **kwargs):
+    **Whole frames.** matplotlib's web canvas normally sends only the pixels that changed since
+    the previous frame, and the browser paints them over what it shows. But ipympl's front end
+    (0.10) drops a frame whenever the next one arrives before it has finished decoding (it sets
+    the image's source again): a slider moved quickly sends frames a few milliseconds apart,
+    and each dropped difference leaves stale pixels on the student's screen for good (measured
+    in JupyterLab: a slider moved and moved back did not give the first picture back). A whole
+    frame repaints everything, so a dropped one is simply skipped. It costs about 2-3 ms more
+    encoding per frame for a 600 x 350 canvas.
+
+    **Level 1.** Encoding the frame is the largest single cost of an update at the default
+    level 6 (18 ms of the Phong explorer's 53); level 1 halves it for a larger message on a
+    local connection. Only PNGs encoded inside this canvas's call are affected."""
+    def whole(*args, **kwargs):
         from PIL import Image
 
+        canvas._force_full = True                  # matplotlib's web canvas: send no diff
         save = Image.Image.save
 
         def save_fast(self, fp, format=None, **params):
@@ -209,7 +218,7 @@ def _fast_png(get_diff_image):
             return get_diff_image(*args, **kwargs)
         finally:
             Image.Image.save = save
-    return fast
+    return whole
 
 
 def setup_axes_2d(ax, limits, title=None, grid=True):

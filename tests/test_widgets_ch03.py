@@ -240,8 +240,10 @@ def test_composer_widget_editing():
     assert len(ex.rows) == composer.MAX_OPERATIONS and ex.add_button.disabled
 
 
-def test_the_frames_sent_to_the_browser_are_lossless_pngs_of_the_canvas():
-    """draw.figure encodes ipympl's frames faster (zlib level 1): still exactly the pixels."""
+def test_the_frames_sent_to_the_browser_are_whole_lossless_pngs_of_the_canvas():
+    """draw.figure encodes ipympl's frames faster (zlib level 1) and whole (never only the
+    pixels that changed since the last frame, which the browser may have dropped): every frame
+    is exactly the canvas, also the second one after a small change."""
     import io
 
     from PIL import Image
@@ -249,10 +251,43 @@ def test_the_frames_sent_to_the_browser_are_lossless_pngs_of_the_canvas():
     explorer = quaternion.QuaternionExplorer()
     canvas = explorer.fig.canvas
     canvas.draw()
-    explorer.angle.value = 120.0
-    canvas._png_is_old, canvas._force_full = True, True
-    png = canvas.get_diff_image()
-    frame = np.asarray(Image.open(io.BytesIO(png)).convert("RGBA"))
-    assert np.array_equal(frame, np.asarray(canvas.get_renderer().buffer_rgba()))
+    for angle in (120.0, 121.0):                          # the second frame differs a little
+        explorer.angle.value = angle
+        canvas._png_is_old = True
+        png = canvas.get_diff_image()
+        frame = np.asarray(Image.open(io.BytesIO(png)).convert("RGBA"))
+        assert np.array_equal(frame, np.asarray(canvas.get_renderer().buffer_rgba()))
+        assert canvas._current_image_mode == "full"
     from PIL import Image as again
     assert again.Image.save.__name__ == "save"          # PIL is left as it was
+
+
+def test_composer_changes_a_sliders_range_and_value_in_one_message():
+    """Switching a row to another operation sends each slider's new range and value together:
+    a value that reached the browser before its new range was clipped there to the old one
+    and sent back (choosing "rotate" after a shear gave 2 degrees instead of 45)."""
+    ex = composer.ComposerExplorer()
+    row = ex.rows[0]
+    row.kind.value = "shear x"                          # slider 0: a in [-2, 2]
+    sent = []
+    for slider in row.sliders:
+        slider._send = lambda msg, buffers=None, s=slider: sent.append((s, msg))
+    row.kind.value = "rotate"                            # slider 0: θ in [-180, 180], 45
+    updates = [msg["state"] for s, msg in sent if s is row.sliders[0]
+               and msg.get("method") == "update"]
+    with_value = [u for u in updates if "value" in u]
+    assert len(with_value) == 1
+    assert with_value[0]["value"] == 45.0
+    assert with_value[0]["min"] == -180 and with_value[0]["max"] == 180
+    assert row.sliders[0].value == 45.0
+
+
+def test_composer_hides_move_up_on_the_first_operation():
+    ex = composer.ComposerExplorer()
+    assert [r.up.layout.visibility for r in ex.rows] == ["hidden", "visible"]
+    ex.move_up(ex.rows[1])
+    assert [r.up.layout.visibility for r in ex.rows] == ["hidden", "visible"]
+    ex.add("scale")
+    assert [r.up.layout.visibility for r in ex.rows] == ["hidden", "visible", "visible"]
+    ex.remove(ex.rows[0])
+    assert [r.up.layout.visibility for r in ex.rows] == ["hidden", "visible"]

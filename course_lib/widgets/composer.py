@@ -192,11 +192,15 @@ class _Row:
         self._configuring = True
         for k, slider in enumerate(self.sliders):
             if k < len(labels):
-                slider.description = labels[k]
-                slider.min, slider.max = -1e9, 1e9          # never clip while switching
-                slider.value = params[k]
-                slider.min, slider.max = ranges[k]
-                slider.step = 1.0 if "°" in labels[k] else 0.05
+                # one message to the browser: a value sent before its new range would be
+                # clipped there to the old range and sent back (choosing "rotate" after a shear
+                # gave 2° instead of 45°)
+                with slider.hold_sync():
+                    slider.description = labels[k]
+                    slider.min, slider.max = -1e9, 1e9          # never clip while switching
+                    slider.value = params[k]
+                    slider.min, slider.max = ranges[k]
+                    slider.step = 1.0 if "°" in labels[k] else 0.05
                 slider.layout.display = None
             else:
                 slider.layout.display = "none"
@@ -280,7 +284,7 @@ class ComposerExplorer(Explorer):
     def _append_row(self, operation):
         row = _Row(self, operation)
         self.rows.append(row)
-        self.rows_box.children = [r.box for r in self.rows]
+        self._show_rows()
         self.add_button.disabled = len(self.rows) >= MAX_OPERATIONS
 
     def add(self, kind="scale", params=None):
@@ -293,7 +297,7 @@ class ComposerExplorer(Explorer):
     def remove(self, row):
         """Remove an operation from the list."""
         self.rows.remove(row)
-        self.rows_box.children = [r.box for r in self.rows]
+        self._show_rows()
         self.add_button.disabled = False
         self.refresh()
 
@@ -302,8 +306,13 @@ class ComposerExplorer(Explorer):
         k = self.rows.index(row)
         if k > 0:
             self.rows[k - 1], self.rows[k] = self.rows[k], self.rows[k - 1]
-            self.rows_box.children = [r.box for r in self.rows]
+            self._show_rows()
             self.refresh()
+
+    def _show_rows(self):
+        self.rows_box.children = [r.box for r in self.rows]
+        for k, row in enumerate(self.rows):           # the first operation cannot move up
+            row.up.layout.visibility = "hidden" if k == 0 else "visible"
 
     def refresh(self):
         """Read the controls into the state and update the picture."""
