@@ -343,3 +343,49 @@ def test_hidden_surface_widget():
     assert np.array_equal(np.ma.filled(ex.depth.get_array(), np.inf), s["depth"])
     ex.cull.value = False
     assert "Without culling" in ex.info.value
+
+
+def test_camera_greys_out_the_sliders_its_projection_does_not_read():
+    ex = camera.CameraExplorer()
+    c = ex.controls
+    projection_sliders = ("fov_deg", "half_size", "oblique_deg", "oblique_scale")
+    for name, used in (("perspective", {"fov_deg"}), ("orthographic", {"half_size"}),
+                       ("oblique", {"half_size", "oblique_deg", "oblique_scale"})):
+        c["projection"].value = name
+        assert {s for s in projection_sliders if not c[s].disabled} == used
+        # an enabled slider changes the camera; a greyed-out one would not have
+        for s in projection_sliders:
+            before = camera.camera_matrices(ex.state)[1]
+            changed = camera.State(**{**vars(ex.state), s: getattr(ex.state, s) * 1.2})
+            moves = not np.allclose(camera.camera_matrices(changed)[1], before)
+            assert moves == (s in used), (name, s)
+
+
+@pytest.mark.parametrize("explorer", [cohen_sutherland.CohenSutherlandExplorer,
+                                      liang_barsky.LiangBarskyExplorer,
+                                      sutherland_hodgman.SutherlandHodgmanExplorer])
+def test_step_buttons_are_greyed_out_at_the_ends(explorer):
+    ex = explorer()
+    back, forward = _step_buttons(ex)
+    ex.step.value = ex.step.max
+    assert forward.disabled and not back.disabled
+    back.click()
+    assert ex.step.value == ex.step.max - 1 and not forward.disabled
+    ex.step.value = 0
+    assert back.disabled and not forward.disabled
+
+
+def _step_buttons(ex):
+    """The back and forward buttons beside the explorer's step slider."""
+    import ipywidgets as w
+
+    def walk(widget):
+        if isinstance(widget, w.Box):
+            if ex.step in widget.children:
+                return [c for c in widget.children if isinstance(c, w.Button)]
+            for child in widget.children:
+                found = walk(child)
+                if found:
+                    return found
+        return None
+    return walk(ex.widget)

@@ -190,3 +190,36 @@ def test_labels_hide_while_dragging_and_come_back_on_release():
     assert shown == ["P2"]                                 # only the dragged point's label
     ex.drag.release()
     assert [label.get_text() for label in ex.labels[:4]] == ["P0", "P1", "P2", "P3"]
+
+
+def test_surface_weight_is_greyed_out_unless_the_patch_is_rational():
+    ex = surface.SurfaceExplorer()
+    for kind in surface.KINDS:
+        ex.kind.value = kind
+        assert ex.weight.disabled == (kind != "NURBS")
+        # and a weight changes the patch exactly when it is enabled
+        heavy = surface.State(**{**vars(ex.state), "weight": 4.0})
+        moved = not np.allclose(surface.scene(heavy)["surface"], surface.scene(ex.state)["surface"])
+        assert moved == (kind == "NURBS")
+
+
+def test_the_knot_fields_example_fits_and_differs_from_the_presets():
+    """Typing the hint's example gives a valid curve, other than any preset's."""
+    ex = bspline.BSplineExplorer()
+    for degree, extra in ((3, 0), (2, 2), (5, 1)):
+        ex.degree.value = degree
+        for _ in range(extra):
+            ex.add_point()
+        example = ex.knot_example()
+        assert example in ex.knot_text.placeholder
+        knots = [float(x) for x in example.split(",")]
+        assert len(knots) == len(ex.state.points) + degree + 1
+        ex.knot_text.value = example
+        typed = bspline.scene(ex.state)
+        assert typed["error"] is None, typed["error"]
+        for preset in bspline.KNOT_PRESETS:
+            if preset != "custom":
+                other = bspline.scene(bspline.State(**{**vars(ex.state), "knots": preset}))
+                assert other["error"] is not None or not np.allclose(other["curve"],
+                                                                      typed["curve"])
+        ex.knots.value = "clamped"

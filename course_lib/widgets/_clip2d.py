@@ -33,7 +33,8 @@ def window_figure(title, figsize=(4.6, 4.6), regions=False):
 
 
 def step_controls(on_step, count):
-    """An integer step slider with back/forward buttons: ``(slider, box)``."""
+    """An integer step slider with back/forward buttons: ``(slider, box)``. A button that
+    cannot move (back at the first step, forward at the last) is greyed out."""
     import ipywidgets as w
 
     slider = w.IntSlider(value=count - 1, min=0, max=max(count - 1, 0), description="step",
@@ -42,6 +43,12 @@ def step_controls(on_step, count):
     forward = w.Button(icon="step-forward", tooltip="next step", layout=w.Layout(width="40px"))
     back.on_click(lambda _: setattr(slider, "value", max(slider.value - 1, slider.min)))
     forward.on_click(lambda _: setattr(slider, "value", min(slider.value + 1, slider.max)))
+
+    def at_the_ends(change=None):
+        back.disabled = slider.value <= slider.min
+        forward.disabled = slider.value >= slider.max
+    slider.observe(at_the_ends, names=["value", "max"])
+    at_the_ends()
     slider.observe(on_step, names="value")
     return slider, w.HBox([back, slider, forward])
 
@@ -49,5 +56,6 @@ def step_controls(on_step, count):
 def set_step_count(slider, count):
     """Give the step slider `count` steps, keeping its value when it still fits."""
     value = min(slider.value, count - 1)
-    slider.max = max(count - 1, 0)
-    slider.value = value
+    with slider.hold_sync():                  # the browser gets the new range and value at once
+        slider.max = max(count - 1, 0)
+        slider.value = value

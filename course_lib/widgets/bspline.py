@@ -176,8 +176,7 @@ class BSplineExplorer(Explorer):
                                     on_press=self._on_pick, on_release=self.update)
         self.degree = w.IntSlider(value=self.state.degree, min=1, max=5, description="degree")
         self.knots = w.Dropdown(options=KNOT_PRESETS, value=self.state.knots, description="knots")
-        self.knot_text = w.Text(placeholder="type knots, e.g. 0,0,0,0,0.3,0.7,1,1,1,1",
-                                description="custom", continuous_update=False,
+        self.knot_text = w.Text(description="custom", continuous_update=False,
                                 layout=w.Layout(width="330px"))
         self.point = w.IntSlider(value=self.state.selected, min=0,
                                  max=len(self.state.points) - 1, description="point")
@@ -196,6 +195,19 @@ class BSplineExplorer(Explorer):
                            w.HBox([add, remove]), self.info])
         self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))
         self._draw(scene(self.state))
+
+    def knot_example(self):
+        """A knot vector that fits the current points and degree, for the text field's hint:
+        n + p + 1 knots, clamped, with the interior knots spread unevenly (t^1.5 of the even
+        spacing, to three decimals), so that it differs from every preset.
+
+        Examples
+        --------
+        >>> BSplineExplorer().knot_example()          # 7 points of degree 3: 11 knots
+        '0,0,0,0,0.125,0.354,0.65,1,1,1,1'
+        """
+        knots = curves.clamped_knots(len(self.state.points), self.state.degree) ** 1.5
+        return ",".join(f"{k:.3f}".rstrip("0").rstrip(".") for k in knots)
 
     # --- editing ----------------------------------------------------------------------------
     def add_point(self):
@@ -217,7 +229,8 @@ class BSplineExplorer(Explorer):
 
     def _points_changed(self):
         self.drag.set_points(self.state.points)
-        self.point.max = len(self.state.points) - 1
+        with self.point.hold_sync():
+            self.point.max = len(self.state.points) - 1
         self.state.selected = self.point.value
         self.update()
 
@@ -259,6 +272,9 @@ class BSplineExplorer(Explorer):
         self.blitter.update()
 
     def _draw(self, s):
+        n, degree = len(self.state.points), self.state.degree
+        self.knot_text.placeholder = (f"type {n + degree + 1} knots (n + p + 1), "
+                                      f"e.g. {self.knot_example()}")
         p = self.state.points
         k = self.state.selected
         self.polygon.set_data(*p.T)

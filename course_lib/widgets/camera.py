@@ -186,7 +186,10 @@ def scene(state):
             polygons.append(css[:, :2])
             colors.append(color)
             depths.append(css[:, 2].mean())
-    order = np.argsort(depths)[::-1]                      # far (z = +1) first: painter's order
+    # far (z = +1) first: painter's order. Faces at equal depth (symmetric ones: equal up to a
+    # last bit that depends on the CPU's BLAS and SIMD kernels) stay in their listed order: the
+    # depths are rounded to 1e-9 (far below a depth-buffer step) and sorted stably.
+    order = np.argsort(-np.round(depths, 9), kind="stable")
     lines = []
     for a, b in _GRID:
         piece = clipping.clip_segment(a, b, planes)
@@ -287,11 +290,24 @@ class CameraExplorer(Explorer):
         ])
         self.info = w.HTMLMath()
         self.widget = w.VBox([self.fig.canvas, columns, self.info])
+        self._enable_projection_controls()
         self._draw(s)
+
+    #: The sliders each projection reads (the others are greyed out: moving them would do
+    #: nothing to the picture).
+    PROJECTION_CONTROLS = {"perspective": ("fov_deg",),
+                           "orthographic": ("half_size",),
+                           "oblique": ("half_size", "oblique_deg", "oblique_scale")}
+
+    def _enable_projection_controls(self):
+        used = self.PROJECTION_CONTROLS[self.state.projection]
+        for name in ("fov_deg", "half_size", "oblique_deg", "oblique_scale"):
+            self.controls[name].disabled = name not in used
 
     def _on_change(self, change):
         for name, control in self.controls.items():
             setattr(self.state, name, control.value)
+        self._enable_projection_controls()
         self.update()
 
     def update(self):

@@ -323,9 +323,10 @@ class IsolineExplorer(Explorer):
     def _level_range(self):
         values = example_data(self.state.field, int(self.state.size)).values
         lo, hi = float(values.min()), float(values.max())
-        self.level.min, self.level.max = -1e9, 1e9          # widen first: min <= max always
-        self.level.min, self.level.max = lo, hi
-        self.level.step = (hi - lo) / 400
+        with self.level.hold_sync():        # one message: the browser never clips to a stale range
+            self.level.min, self.level.max = -1e9, 1e9      # widen first: min <= max always
+            self.level.min, self.level.max = lo, hi
+            self.level.step = (hi - lo) / 400
 
     def _static(self, s):
         """The field image and the grid lines (redrawn only when the field changes)."""
@@ -691,8 +692,9 @@ class IsosurfaceExplorer(Explorer):
 
     def _on_volume(self, change):
         self.state.volume = change["new"]
-        self._level_range()
-        self.level.value = float(example_volume(self.state.volume).level)
+        with self.level.hold_sync():        # the new range and value reach the browser together
+            self._level_range()
+            self.level.value = float(example_volume(self.state.volume).level)
         self._on_change(None)
 
     def _on_change(self, change):

@@ -203,7 +203,7 @@ class HalfEdgeExplorer(Explorer):
         self.labels = [self.ax.text(*p * 1.12, str(i), fontsize=7, color="0.25")
                        for i, p in enumerate(s["vertices"])]
         self.state.half_edge = 0
-        with self.index.hold_trait_notifications():
+        with self.index.hold_trait_notifications(), self.index.hold_sync():
             self.index.max = self.he.n_half_edges - 1
             self.index.value = 0
         self.blitter.forget_background()

@@ -193,6 +193,7 @@ class SurfaceExplorer(Explorer):
                                                   self.weight, self.azimuth, self.elevation,
                                                   self.info])],
                              layout=w.Layout(flex_flow="row wrap"))
+        self.weight.disabled = self.state.kind != "NURBS"
         self._draw(s)
 
     def _set_camera(self):
@@ -206,6 +207,7 @@ class SurfaceExplorer(Explorer):
         self.state.i, self.state.j = self.i.value, self.j.value
         self.state.lift, self.state.weight = self.lift.value, self.weight.value
         self.state.azimuth, self.state.elevation = self.azimuth.value, self.elevation.value
+        self.weight.disabled = self.state.kind != "NURBS"    # only a rational patch has weights
         self.update()
 
     def update(self):

@@ -512,8 +512,9 @@ class TransferFunctionExplorer(Explorer):
         k = self.state.selected
         self._syncing = True
         try:
-            self.point.max = len(self.state.points) - 1
-            self.point.value = k
+            with self.point.hold_sync():
+                self.point.max = len(self.state.points) - 1
+                self.point.value = k
             self.value.value = float(self.state.points[k])
             self.opacity.value = float(self.state.opacities[k])
             self.color.value = _hex(self.state.colors[k])

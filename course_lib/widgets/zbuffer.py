@@ -38,16 +38,17 @@ PSEUDOCODE = [
 
 @dataclass
 class State:
-    """The drawing order and the number of triangles drawn so far.
+    """The drawing order and the number of triangles drawn so far (the explorer opens half
+    way, after two triangles, so both buffers show something and the order matters).
 
     Examples
     --------
     >>> State().step
-    0
+    2
     """
 
     order: str = "as listed (0, 1, 2, 3)"
-    step: int = 0
+    step: int = 2
 
 
 def _order(name):
@@ -120,8 +121,8 @@ class ZBufferExplorer(Explorer):
     Examples
     --------
     >>> explorer = ZBufferExplorer()
-    >>> explorer.step.value = 2
-    >>> "triangle 1" in explorer.info.value
+    >>> explorer.step.value = 3
+    >>> "triangle 2" in explorer.info.value
     True
     """
 
