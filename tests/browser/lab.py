@@ -284,3 +284,65 @@ def data_to_canvas_fraction(x, y, xlim, ylim, left, right, bottom, top):
     fx = left + (x - xlim[0]) / (xlim[1] - xlim[0]) * (right - left)
     fy = bottom + (y - ylim[0]) / (ylim[1] - ylim[0]) * (top - bottom)
     return fx, 1.0 - fy
+
+
+class PageKernel:
+    """A second client of the kernel a notebook page runs on (through its connection file in
+    the server's runtime folder): it reads the explorers' state the page cannot show, such as
+    where a draggable point lies, and proves the kernel is the same one at the end."""
+
+    def __init__(self, server, path, timeout=30):
+        from jupyter_client import BlockingKernelClient
+
+        sessions = json.load(urllib.request.urlopen(
+            f"{server.url}/api/sessions?token={server.token}", timeout=10))
+        ids = [s["kernel"]["id"] for s in sessions if s["path"] == path]
+        if len(ids) != 1:
+            raise RuntimeError(f"{path}: {len(ids)} kernel sessions, expected 1")
+        self.kernel_id = ids[0]
+        self.server, self.timeout = server, timeout
+        connection = server.tmp / "jupyter_runtime_dir" / f"kernel-{self.kernel_id}.json"
+        self.client = BlockingKernelClient(connection_file=str(connection))
+        self.client.load_connection_file()
+        self.client.start_channels()
+        self.client.wait_for_ready(timeout=timeout)
+
+    def run(self, code):
+        """Execute `code` in the page's kernel; return what it printed (raise on an error)."""
+        printed, errors = [], []
+
+        def hook(msg):
+            if msg["msg_type"] == "stream":
+                printed.append(msg["content"]["text"])
+            elif msg["msg_type"] == "error":
+                errors.append("\n".join(msg["content"]["traceback"]))
+
+        reply = self.client.execute_interactive(code, timeout=self.timeout, output_hook=hook,
+                                                store_history=False)
+        if reply["content"]["status"] != "ok":
+            raise RuntimeError("".join(errors))
+        return "".join(printed)
+
+    def json(self, code):
+        """`code` ends by printing a JSON document: return it parsed."""
+        return json.loads(self.run(code).strip().splitlines()[-1])
+
+    def state(self):
+        """The kernel's execution state as the server sees it ('idle', 'busy', 'dead'...)."""
+        info = json.load(urllib.request.urlopen(
+            f"{self.server.url}/api/kernels/{self.kernel_id}?token={self.server.token}",
+            timeout=10))
+        return info["execution_state"]
+
+    def close(self):
+        self.client.stop_channels()
+
+
+def cell_execution_counts(notebook):
+    """The execution count of the cell of each widget view, in page order."""
+    return notebook.page.evaluate(
+        """(selector) => [...document.querySelectorAll(selector)].map(view => {
+             const prompt = view.closest('.jp-CodeCell').querySelector('.jp-InputPrompt');
+             const digits = prompt.textContent.match(/\\d+/);
+             return digits ? Number(digits[0]) : null;
+           })""", WIDGET_VIEW)

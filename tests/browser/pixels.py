@@ -10,12 +10,15 @@ def load(png):
                       .convert("RGB"), dtype=np.int16)
 
 
-def changed_pixels(before, after, threshold=24):
-    """The number of pixels whose colour changed by more than `threshold` (any channel)."""
+def changed_pixels(before, after, threshold=24, border=0):
+    """The number of pixels whose colour changed by more than `threshold` (any channel),
+    `border` pixels at each edge left out."""
     a, b = load(before), load(after)
     if a.shape != b.shape:
         height, width = min(a.shape[0], b.shape[0]), min(a.shape[1], b.shape[1])
         a, b = a[:height, :width], b[:height, :width]
+    if border:
+        a, b = a[border:-border, border:-border], b[border:-border, border:-border]
     return int((np.abs(a - b).max(axis=-1) > threshold).sum())
 
 

@@ -1,0 +1,346 @@
+"""Drive every control of a widget view as a student would, and watch its picture.
+
+The controls are found in the page, not in the kernel: every slider, menu, toggle, button,
+check box, text field and colour picker inside a widget view (matplotlib's own toolbar is not an
+explorer control and is left alone). Each is given a stable key (kind, label, occurrence) so a
+control that a previous action re-created (the composer's rows) is still recognised, and each
+is operated with the keyboard or the mouse. The mouse gestures of the figure come from the
+kernel (:meth:`course_lib.widgets._base.Explorer.mouse_gestures`).
+"""
+import re
+import time
+
+from .pixels import changed_pixels
+
+# A control inside a view; toggle buttons of a ToggleButtons group are one control.
+_ENUMERATE = r"""(root) => {
+  const out = [];
+  const seen = {};
+  const label = (el) => {
+    const l = el.querySelector(':scope > .widget-label');
+    return l ? l.textContent.trim() : '';
+  };
+  const title = (el) => {
+    const t = el.getAttribute('title');
+    return t && t !== 'null' ? t : el.textContent.trim();
+  };
+  const selector = ['.widget-slider', '.widget-dropdown', '.widget-toggle-buttons',
+                    'button.widget-button', 'button.widget-toggle-button', '.widget-checkbox',
+                    '.widget-text', '.widget-textarea', '.widget-colorpicker'].join(', ');
+  root.querySelectorAll('[data-course-control]').forEach(e => e.removeAttribute('data-course-control'));
+  root.querySelectorAll(selector).forEach(el => {
+    if (el.closest('.jupyter-matplotlib-toolbar')) return;
+    if (el.matches('button.widget-toggle-button') && el.closest('.widget-toggle-buttons')) return;
+    let kind, name, disabled = false, options = null, selected = null;
+    if (el.matches('.widget-slider')) {
+      kind = 'slider'; name = label(el);
+      disabled = !!el.querySelector('.noUi-target[disabled]');
+    } else if (el.matches('.widget-dropdown')) {
+      const select = el.querySelector('select');
+      kind = 'menu'; name = label(el); disabled = select.disabled;
+      options = [...select.options].map(o => o.textContent.trim().replace(/\u00a0/g, ' '));
+      selected = select.selectedIndex;
+    } else if (el.matches('.widget-toggle-buttons')) {
+      const buttons = [...el.querySelectorAll('button')];
+      kind = 'toggles'; name = label(el) || buttons.map(b => b.textContent.trim()).join('/');
+      disabled = buttons.every(b => b.disabled);
+      options = buttons.map(b => b.textContent.trim().replace(/\u00a0/g, ' '));
+      selected = buttons.findIndex(b => b.classList.contains('mod-active'));
+    } else if (el.matches('button.widget-button')) {
+      kind = 'button'; name = title(el);
+      disabled = el.disabled;
+    } else if (el.matches('button.widget-toggle-button')) {
+      kind = 'toggle'; name = title(el);
+      disabled = el.disabled;
+    } else if (el.matches('.widget-checkbox')) {
+      kind = 'checkbox'; name = el.textContent.trim();
+      disabled = el.querySelector('input').disabled;
+    } else if (el.matches('.widget-colorpicker')) {
+      kind = 'colour'; name = label(el);
+      disabled = [...el.querySelectorAll('input')].every(i => i.disabled);
+    } else if (el.matches('.widget-textarea')) {
+      kind = 'textarea'; name = label(el); disabled = el.querySelector('textarea').disabled;
+    } else {
+      const input = el.querySelector('input');
+      if (!input) return;
+      kind = input.type === 'number' ? 'number' : 'text'; name = label(el);
+      disabled = input.disabled;
+    }
+    const base = kind + '|' + name;
+    seen[base] = (seen[base] || 0) + 1;
+    el.setAttribute('data-course-control', String(out.length));
+    out.push({key: base + '|' + seen[base], kind, name, disabled, options, selected,
+              visible: el.offsetParent !== null && getComputedStyle(el).visibility !== 'hidden'});
+  });
+  return out;
+}"""
+
+
+#: Controls that choose among options (a mode): every option is visited in turn.
+CHOOSERS = ("menu", "toggles")
+
+
+def controls(view):
+    """The view's controls in page order: dicts with key, kind, name, disabled, visible,
+    options and selected (for menus and toggle groups) and index (its position, valid until
+    the next call)."""
+    return [dict(c, index=i) for i, c in enumerate(view.evaluate(_ENUMERATE))]
+
+
+def destructive(control):
+    """A control that takes something away (a "remove" button): operated after the others, so
+    that they act on the explorer's full default scene."""
+    return control["kind"] == "button" and control["name"].lower().startswith("remove")
+
+
+def element(view, index):
+    return view.locator(f"[data-course-control='{index}']")
+
+
+def pictures(view):
+    """The figures of a view: ipympl canvases and image widgets (rendered 3D views)."""
+    return view.locator(".jupyter-matplotlib-canvas-div canvas:first-child, img.widget-image")
+
+
+def snapshot(view):
+    """PNG bytes of every picture of the view, and the view's text (its panels and read-outs)."""
+    figures = pictures(view)
+    images = [figures.nth(k).screenshot(animations="disabled") for k in range(figures.count())]
+    return images, view.inner_text()
+
+
+#: A pixel has changed when a colour channel moved by more than this (the screenshots are
+#: lossless, so this only ignores nothing-but-rounding; a 5 % change of a shading coefficient
+#: moves a lit pixel by about 12 levels).
+CHANGE_LEVEL = 6
+
+
+def picture_change(before, after):
+    """Pixels that changed between two snapshots' pictures (summed over the figures), leaving
+    out a 2-pixel border: an image scaled to a fractional height lands on the page with its
+    first row half a pixel up or down from one picture to the next."""
+    return sum(changed_pixels(a, b, threshold=CHANGE_LEVEL, border=2)
+               for a, b in zip(before[0], after[0]))
+
+
+def wait_for_change(view, before, min_pixels, timeout=6.0):
+    """Snapshots until the picture changes (then until it is steady) or the time is up.
+
+    Returns the last snapshot and the number of changed pixels against `before`."""
+    deadline = time.monotonic() + timeout
+    current = snapshot(view)
+    while picture_change(before, current) < min_pixels and time.monotonic() < deadline:
+        time.sleep(0.12)
+        current = snapshot(view)
+    if picture_change(before, current) >= min_pixels:
+        # steady: the same picture twice in a row (a preview followed by the full image, a
+        # drop followed by a full ray cast)
+        for _ in range(40):
+            time.sleep(0.25)
+            again = snapshot(view)
+            if picture_change(current, again) == 0:
+                break
+            current = again
+    return current, picture_change(before, current)
+
+
+_EXAMPLE = re.compile(r"e\.g\.\s*(\S+)")
+
+
+def choose(view, control, option):
+    """Pick option number `option` of a menu or a toggle group."""
+    el = element(view, control["index"])
+    el.scroll_into_view_if_needed()
+    if control["kind"] == "menu":
+        el.locator("select").select_option(index=option)
+    else:
+        el.locator("button").nth(option).click()
+    return f"{control['kind']} -> {control['options'][option]!r}"
+
+
+def operate(view, control):
+    """Operate one control (not a chooser) as a student would.
+
+    Returns a description of what was done, and a function that undoes it (None where undoing
+    is not one gesture: buttons, typed text)."""
+    el = element(view, control["index"])
+    page = view.page
+    kind = control["kind"]
+    el.scroll_into_view_if_needed()
+    if kind == "slider":
+        handle = el.locator(".noUi-handle").first
+        readout = el.locator(".widget-readout").first
+        start = readout.inner_text()
+        low, now, high = (float(handle.get_attribute(f"aria-value{end}"))
+                          for end in ("min", "now", "max"))
+        # five steps towards the farther end, as a student nudges a slider with the keyboard
+        key, back = ("ArrowRight", "ArrowLeft") if high - now >= now - low else \
+            ("ArrowLeft", "ArrowRight")
+        handle.focus()
+        for _ in range(5):
+            page.keyboard.press(key)
+            time.sleep(0.05)
+
+        def undo():
+            handle.focus()
+            for _ in range(12):                        # back to where it started
+                if readout.inner_text() == start:
+                    break
+                page.keyboard.press(back)
+                time.sleep(0.05)
+            return f"slider back to {readout.inner_text()}"
+        return f"slider {start} -> {readout.inner_text()}", undo
+    if kind in ("button", "toggle"):
+        el.click()
+        return "click", ((lambda: el.click() or "clicked again") if kind == "toggle" else None)
+    if kind == "checkbox":
+        box = el.locator("input")
+        box.click()
+        return "tick", lambda: box.click() or "unticked"
+    if kind == "number":
+        field = el.locator("input")
+        value = field.input_value()
+        high = field.get_attribute("max")
+        new = int(float(value or 0)) + 1
+        if high is not None and new > float(high):
+            new = int(float(value)) - 1
+        field.fill(str(new))
+        field.press("Enter")
+        return f"number {value} -> {new}", None
+    if kind == "text":
+        field = el.locator("input")
+        example = _EXAMPLE.search(field.get_attribute("placeholder") or "")
+        text = example.group(1).rstrip(")") if example else "1"
+        field.fill(text)
+        field.press("Enter")
+        return f"typed {text!r}", None
+    if kind == "textarea":
+        el.locator("textarea").fill("1")
+        return "typed '1'", None
+    if kind == "colour":                       # the swatch (the browser's colour chooser)
+        el.locator("input[type='color']").fill("#2ca02c")
+        return "colour -> #2ca02c", None
+    raise AssertionError(f"no way to operate a {kind}")
+
+
+def perform(view, gesture, steps=10):
+    """Perform a mouse gesture (a drag, a view turn or a click) on the view's figure canvas."""
+    canvas = view.locator(".jupyter-matplotlib-canvas-div canvas").last   # the top canvas
+    canvas.scroll_into_view_if_needed()
+    box = canvas.bounding_box()
+    page = view.page
+    x0 = box["x"] + gesture["start"][0] * box["width"]
+    y0 = box["y"] + gesture["start"][1] * box["height"]
+    x1 = box["x"] + gesture["end"][0] * box["width"]
+    y1 = box["y"] + gesture["end"][1] * box["height"]
+    page.mouse.move(x0, y0)
+    page.mouse.down()
+    if gesture["kind"] != "click":
+        for k in range(1, steps + 1):
+            page.mouse.move(x0 + (x1 - x0) * k / steps, y0 + (y1 - y0) * k / steps)
+            time.sleep(0.04)
+    page.mouse.up()
+    return f"{gesture['kind']} {gesture['what']}"
+
+
+def wait_until_steady(view, timeout=10.0):
+    """Snapshots until two in a row, half a second apart, are the same (a view that has just
+    been scrolled into sight may still receive its first frames); returns the last one."""
+    deadline = time.monotonic() + timeout
+    current = snapshot(view)
+    while time.monotonic() < deadline:
+        time.sleep(0.5)
+        again = snapshot(view)
+        if picture_change(current, again) == 0 and again[1] == current[1]:
+            return again
+        current = again
+    return current
+
+
+def wait_for_return(view, before, tolerance, timeout=6.0):
+    """Snapshots until the picture is back to `before` (within `tolerance` pixels); returns
+    the number of pixels still different."""
+    deadline = time.monotonic() + timeout
+    while True:
+        left = picture_change(before, snapshot(view))
+        if left < tolerance or time.monotonic() > deadline:
+            return left
+        time.sleep(0.12)
+
+
+def drive(view, gestures, min_pixels, expected=None):
+    """Operate every control of one explorer's view, then perform its mouse gestures.
+
+    Every control that is visible and enabled is operated once (a "remove" button after the
+    others); every option of every menu and toggle group is chosen in turn, and after each
+    choice the controls it enabled are operated too. Each action must change the picture;
+    `expected` maps ``(key, option)`` (option None for all of a control) to "text" (the text
+    must change instead) or "none" (nothing need change). A slider moved and moved back, or a
+    box ticked and unticked, must give the first picture back.
+
+    Returns (what was done, problems), lists of strings."""
+    done, problems = [], []
+    expected = expected or {}
+
+    def allowed(key, option=None):
+        return expected.get((key, option), expected.get((key, None)))
+
+    def check(what, before, changed, after, how=None):
+        text_changed = after[1] != before[1]
+        line = f"{what}: {changed} px, text {'changed' if text_changed else 'same'}"
+        done.append(line)
+        if changed < min_pixels and how != "none" and not (how == "text" and text_changed):
+            problems.append(line)
+
+    operated, chosen = set(), set()
+    park_mouse(view.page)
+    wait_until_steady(view)
+    while True:
+        current = [c for c in controls(view) if c["visible"] and not c["disabled"]]
+        todo = [c for c in current if c["kind"] not in CHOOSERS and c["key"] not in operated]
+        if todo:
+            control = min(todo, key=destructive)
+            operated.add(control["key"])
+            before = snapshot(view)
+            action, undo = operate(view, control)
+            how = allowed(control["key"])
+            after, changed = wait_for_change(view, before, min_pixels,
+                                             timeout=2.0 if how else 6.0)
+            check(f"{control['key']}: {action}", before, changed, after, how)
+            if undo is not None and changed >= min_pixels:
+                how = undo()
+                left = wait_for_return(view, before, min_pixels)
+                done.append(f"{control['key']}: {how}, {left} px left")
+                if left >= min_pixels:
+                    problems.append(done[-1] + " (the first picture did not come back)")
+            continue
+        pending = [(c, k) for c in current if c["kind"] in CHOOSERS
+                   for k in range(len(c["options"]))
+                   if k != c["selected"] and (c["key"], c["options"][k]) not in chosen]
+        if not pending:
+            break
+        control, option = pending[0]
+        chosen.add((control["key"], control["options"][option]))
+        operated.add(control["key"])
+        before = snapshot(view)
+        action = choose(view, control, option)
+        how = allowed(control["key"], control["options"][option])
+        after, changed = wait_for_change(view, before, min_pixels,
+                                         timeout=2.0 if how else 6.0)
+        check(f"{control['key']}: {action}", before, changed, after, how)
+    never = sorted({c["key"] for c in controls(view) if c["visible"]} - operated)
+    if never:
+        problems.append(f"never enabled: {never}")
+    for gesture in gestures:
+        before = snapshot(view)
+        action = perform(view, gesture)
+        park_mouse(view.page)
+        after, changed = wait_for_change(view, before, min_pixels)
+        check(action, before, changed, after)
+    return done, problems
+
+
+def park_mouse(page):
+    """Move the mouse off every figure: ipympl fades its toolbar in while the mouse is over a
+    figure, and the toolbar would count as a changed picture."""
+    page.mouse.move(1, 1)

@@ -1,0 +1,124 @@
+"""Every lesson run in JupyterLab with its default settings, and every control of every
+explorer driven there.
+
+First, as a student opens a lesson: Run All, then no error output, no browser console error, no
+message in JupyterLab's log console, and every widget of the stored notebook rendered with a
+figure (nbval only proves the kernel side).
+
+JupyterLab 4.6 sends widget messages to kernel subshells by default, so a callback runs on a
+thread other than the one that made the explorer's figure (see
+:func:`course_lib.widgets._base.handle_comms_on_main_thread`). For every lesson, after Run All,
+this moves each slider, picks another entry of each menu and toggle group, clicks each button,
+ticks each check box, types into each field and performs each mouse gesture of each figure
+(drag a point, turn a 3D view, click a pixel), and checks after each one that the explorer's
+picture changed; at the end, that the kernel is the same one (it did not die and restart), that
+it really received messages on a subshell, and that nothing reached stderr, the browser console,
+JupyterLab's log console or the server log (where VTK's and a dying kernel's messages land).
+"""
+import re
+from pathlib import Path
+
+import pytest
+
+from .controls import drive
+from .lab import (ROOT, WIDGET_VIEW, NotebookPage, PageKernel, cell_execution_counts,
+                  expected_widget_cells)
+
+NOTEBOOKS = sorted(p.relative_to(ROOT).as_posix() for p in (ROOT / "notebooks").glob("*.ipynb"))
+MIN_CHANGED = 30             # pixels: a moved marker or a recoloured patch changes more
+
+# Controls that may leave the picture as it is, and why: "text" ones must change the
+# explorer's text instead; "none" ones may change nothing visible (an option is given where
+# only that option of a menu is meant).
+EXPECTED = {
+    ("HiddenSurfaceExplorer", "checkbox|\u200bcull back faces|1", None): (
+        "text", "culling saves work and must not change the picture: the lesson's point"),
+    ("CameraExplorer", "slider|up z|1", None): (
+        "text", "up is only a direction: (0, 0, 0.5) gives the same camera as (0, 0, 1)"),
+    ("TransferFunctionExplorer", "menu|preset|1", "custom"): (
+        "none", "'custom' names the student's own edits; choosing it keeps the points"),
+    ("TransferFunctionExplorer", "menu||1", "grey"): (
+        "none", "the preset chosen just before ('ramp') is already grey"),
+    ("RayTracerExplorer", "button|render full image|1", None): (
+        "none", "the full image is already shown once the sliders rest"),
+    ("MockExamWidget", "textarea||1", None): (
+        "none", "an answer is read when it is submitted"),
+    ("MockExamWidget", "number|seed|1", None): (
+        "none", "the seed is read by 'New exam'"),
+    ("MockExamWidget", "button|Submit|1", None): ("text", "the feedback is text"),
+    ("MockExamWidget", "button|Next question|1", None): ("text", "a question is text"),
+    ("MockExamWidget", "button|New exam|1", None): ("text", "a question is text"),
+}
+
+PROBE = """
+import json
+from course_lib.widgets._base import Explorer
+print(json.dumps([{"class": type(Out.get(n)).__name__,
+                   "gestures": Out[n].mouse_gestures() if isinstance(Out.get(n), Explorer)
+                   else []} for n in COUNTS]))
+"""
+
+# What the server's log must never show: VTK errors, a C++ abort, a kernel that died.
+SERVER_LOG_PROBLEMS = re.compile(r"ERR\||terminate called|KernelRestarter|restarting kernel|"
+                                 r"[Kk]ernel .* died|Segmentation fault|Traceback")
+
+
+def check_rendered(notebook, path):
+    """The lesson as Run All leaves it: no error, every widget view shown with a figure."""
+    notebook.screenshot(Path(path).stem)
+    assert notebook.error_outputs() == [], "a cell produced an error or wrote to stderr"
+    assert notebook.widget_problems() == []
+    assert notebook.console_errors == [], "the browser console reported errors"
+    assert notebook.log_console_count() == 0, "JupyterLab's log console caught messages " \
+        "(an exception in a widget callback lands there)"
+    expected = len(expected_widget_cells(path))
+    views = notebook.page.locator(WIDGET_VIEW)
+    assert views.count() == expected, f"{views.count()} widget outputs, {expected} expected"
+    for k in range(views.count()):
+        drawn = views.nth(k).locator(".jupyter-matplotlib, .widget-image, img")
+        assert drawn.count() > 0, f"widget {k} shows no figure (ipympl canvas or image)"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: Path(p).stem)
+def test_lesson_runs_and_every_control_of_every_explorer_changes_its_picture(lab, browser, path):
+    log = lab.tmp / "server.log"
+    log_start = log.stat().st_size
+    notebook = NotebookPage(browser, lab, path).open().run_all()
+    kernel = PageKernel(lab, path)
+    try:
+        check_rendered(notebook, path)
+        if not expected_widget_cells(path):
+            return
+        kernel.run("_course_same_kernel = 'yes'")
+        counts = cell_execution_counts(notebook)
+        explorers = kernel.json(PROBE.replace("COUNTS", repr(counts)))
+        views = notebook.page.locator(WIDGET_VIEW)
+        assert views.count() == len(explorers)
+        done, problems = [], []
+        for k, explorer in enumerate(explorers):
+            view = views.nth(k)
+            view.scroll_into_view_if_needed()
+            name = explorer["class"]
+            expected = {(key, option): how for (cls, key, option), (how, _) in EXPECTED.items()
+                        if cls == name}
+            lines, wrong = drive(view, explorer["gestures"], MIN_CHANGED, expected)
+            done += [f"{name}: {line}" for line in lines]
+            problems += [f"{name}: {line}" for line in wrong]
+        print("\n".join(done))
+        assert kernel.state() != "dead"
+        assert kernel.run("print(_course_same_kernel)").strip() == "yes", \
+            "the kernel was restarted (it died during the interactions)"
+        forwarded = int(kernel.run(
+            "print(get_ipython().kernel.shell_handlers['comm_msg'].forwarded)"))
+        assert problems == [], "\n".join(problems)
+        assert forwarded > 0, "no widget message came on a subshell: not JupyterLab's default"
+        assert notebook.error_outputs() == [], "a cell produced an error or wrote to stderr"
+        assert notebook.console_errors == [], "the browser console reported errors"
+        assert notebook.log_console_count() == 0, "JupyterLab's log console caught messages"
+        with open(log, errors="replace") as f:
+            f.seek(log_start)
+            bad = [line for line in f if SERVER_LOG_PROBLEMS.search(line)]
+        assert bad == [], "the server log (the kernel's stderr) shows:\n" + "".join(bad[:20])
+    finally:
+        kernel.close()
+        notebook.close()
