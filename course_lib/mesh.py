@@ -1710,26 +1710,45 @@ def collapse_cost(Q, v):
 
 
 def _solvable(a):
-    """Which 3x3 quadric blocks are safely invertible (see _SINGULAR)."""
-    trace = np.trace(a, axis1=-2, axis2=-1)
-    return (trace > 0) & (np.linalg.det(a) > _SINGULAR * trace ** 3)
+    """Which symmetric 3x3 quadric blocks (..., 3, 3) are safely invertible (see _SINGULAR).
+
+    The determinant by cofactors, in the arithmetic of _target10 rather than LAPACK's (whose
+    last bit depends on the CPU's kernel), so that a block near the threshold is judged alike
+    on every machine and alike in the batch and in the loop of simplify_qem.
+    """
+    q0, q1, q2, q4, q5, q7 = (a[..., i, j] for i, j in ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2),
+                                                        (2, 2)))
+    det = q0 * (q4 * q7 - q5 * q5) + q1 * (q2 * q5 - q1 * q7) + q2 * (q1 * q5 - q2 * q4)
+    trace = q0 + q4 + q7
+    return (trace > 0) & (det > _SINGULAR * trace * trace * trace)
 
 
 def _optimal(Qe, p1, p2):
-    """Batched best positions and costs: solve A v = -b, or the best of p1, p2, midpoint."""
-    a = Qe[:, :3, :3]
-    ok = _solvable(a)
+    """Batched best positions and costs: solve A v = -b, or the best of p1, p2, midpoint.
+
+    _target10 for many edges, operation for operation (cofactors, no LAPACK or BLAS): the
+    results are the same bits on every machine, and the same as the loop's. That matters:
+    simplify_qem's heap orders the edges by these costs, and on a symmetric mesh many are
+    equal up to the last bit, which LAPACK's and BLAS's CPU-specific kernels round differently.
+    """
+    q = Qe[:, _UPPER[0], _UPPER[1]]                     # the 10 distinct entries, as Q10
+    ok = _solvable(Qe[:, :3, :3])
     x = np.empty_like(p1)
     if ok.any():
-        x[ok] = np.linalg.solve(a[ok], -Qe[ok, :3, 3][..., None])[..., 0]
+        q0, q1, q2, q3, q4, q5, q6, q7, q8, _ = q[ok].T
+        c00, c01, c02 = q4 * q7 - q5 * q5, q2 * q5 - q1 * q7, q1 * q5 - q2 * q4
+        c11, c12, c22 = q0 * q7 - q2 * q2, q1 * q2 - q0 * q5, q0 * q4 - q1 * q1
+        det = q0 * c00 + q1 * c01 + q2 * c02
+        r0, r1, r2 = -q3 / det, -q6 / det, -q8 / det
+        x[ok] = np.stack([c00 * r0 + c01 * r1 + c02 * r2, c01 * r0 + c11 * r1 + c12 * r2,
+                          c02 * r0 + c12 * r1 + c22 * r2], axis=1)
     bad = ~ok
     if bad.any():
-        cand = np.stack([p1[bad], p2[bad], 0.5 * (p1[bad] + p2[bad])], axis=1)
-        h = np.concatenate([cand, np.ones(cand.shape[:2] + (1,))], axis=-1)
-        c = np.einsum("kci,kij,kcj->kc", h, Qe[bad], h)
-        x[bad] = cand[np.arange(len(cand)), np.argmin(c, axis=1)]
-    h = np.concatenate([x, np.ones((len(x), 1))], axis=1)
-    return x, np.maximum(np.einsum("ki,kij,kj->k", h, Qe, h), 0.0)
+        cand = np.stack([p1[bad], p2[bad], (p1[bad] + p2[bad]) / 2], axis=1)      # (k, 3, 3)
+        c = _cost10(q[bad].T[:, :, None], cand[..., 0], cand[..., 1], cand[..., 2])
+        x[bad] = cand[np.arange(len(cand)), np.argmin(c, axis=1)]   # ties: the first, as min
+    cost = _cost10(q.T, x[:, 0], x[:, 1], x[:, 2])
+    return x, np.where(cost > 0, cost, 0.0)
 
 
 def optimal_position(Q, p1=None, p2=None):
@@ -1772,6 +1791,7 @@ def optimal_position(Q, p1=None, p2=None):
     q = as_array(Q, "Q")
     if q.shape != (4, 4):
         raise ValueError(f"Q must be a 4x4 quadric, got shape {q.shape}")
+    q = (q + q.T) / 2           # the form v^T Q v only sees the symmetric part (a quadric is)
     if p1 is None or p2 is None:
         if not _solvable(q[:3, :3]):
             raise ValueError("Q is singular (its planes meet in a line or a plane, not a point): "

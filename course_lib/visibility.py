@@ -801,13 +801,30 @@ def _brute_force(o, d, v0, e1, e2, t_min, t_max):
     return Hits(best_t, best_id, p * n, 0)
 
 
+def _lower_part(key, k):
+    """Boolean mask of the `k` smallest entries of `key`, ties going to the lower positions.
+
+    O(n), like ``np.argpartition``, but deterministic: argpartition leaves ties at the k-th
+    value in whatever order numpy's CPU-specific kernel produces (its AVX-512, AVX2 and
+    baseline kernels differ), which changed the BVH and its test counts from one machine to the
+    next. Here only the k-th *value* comes from ``np.partition``, the same on every machine.
+    """
+    kth = np.partition(key, k)[k]
+    left = key < kth
+    short = k - np.count_nonzero(left)
+    if short:                                   # ties at the k-th value: the first ones go left
+        left[np.flatnonzero(key == kth)[:short]] = True
+    return left
+
+
 class BVH:
     r"""A bounding-volume hierarchy of axis-aligned boxes over triangles, for ray casting.
 
     **Build** (once, :math:`O(P \log P)`): put all triangles in the root; split a node's
     triangles at the median of their box centres along the axis where those centres spread
-    most; recurse until at most `leaf_size` triangles remain. Every node stores the box bounding
-    its triangles (padded by a hair so rounding never loses a hit).
+    most (equal centres: the lower triangle index goes left, so the tree is the same on every
+    machine); recurse until at most `leaf_size` triangles remain. Every node stores the box
+    bounding its triangles (padded by a hair so rounding never loses a hit).
 
     **Traversal** (per ray): a ray that misses a node's box, or reaches it only beyond the
     nearest hit found so far, skips the whole subtree; otherwise the nearer child is visited
@@ -884,7 +901,10 @@ class BVH:
             c = centre[idx]
             axis = int(np.argmax(c.max(axis=0) - c.min(axis=0)))
             mid = (s + e) // 2
-            order[s:e] = idx[np.argpartition(c[:, axis], mid - s)]
+            # idx is in ascending triangle index (each side keeps its order), so equal
+            # centres send the lower triangle index left
+            lower = _lower_part(c[:, axis], mid - s)
+            order[s:mid], order[mid:e] = idx[lower], idx[~lower]
             left, right = new_node(), new_node()
             children[node] = [left, right]
             axes[node] = axis

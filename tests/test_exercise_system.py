@@ -9,7 +9,8 @@ from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
 from course_lib.exercises import build
 from course_lib.exercises.core import (DrawnExercise, Exercise, Feedback, Mistake,
                                        diagnose_matrix, diagnose_number, diagnose_parts,
-                                       diagnose_vector, gap, read_floats, well_separated)
+                                       diagnose_vector, gap, parts_separated, read_floats,
+                                       well_separated)
 
 R90 = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])   # 2D rotation by 90°
 M = np.array([[2.0, -1.0, 3.0], [1.0, 2.0, -1.0], [0.0, 0.0, 1.0]])
@@ -294,6 +295,22 @@ def test_separation_helpers():
                               projective=True)
     assert read_floats([[1, 2], [3]]) is None and read_floats({1.0}) is None
     assert read_floats((1, 2)).tolist() == [1.0, 2.0]
+
+
+@pytest.mark.parametrize("ulps", [-2, -1, 0, 1, 2])
+def test_a_distance_of_exactly_apart_is_apart_whatever_its_last_bit(ulps):
+    # 0.375 and 0.425 are 0.05 apart; which side of 0.05 the computed difference falls on
+    # depends on the last bit of the slip's value (the CPU's BLAS kernel, say): the variant a
+    # seed gives must not
+    slip = 0.425
+    for _ in range(abs(ulps)):
+        slip = math.nextafter(slip, math.copysign(math.inf, ulps))
+    assert well_separated(0.375, [Mistake(slip, "", "a")])
+    assert well_separated(0.0, [Mistake(1.0, "", "a"), Mistake(1.0 - (slip - 0.375), "", "b")])
+    assert parts_separated([("x", 0.375, [Mistake(slip, "", "a")])])
+    # clearly closer than 0.05 still is not
+    assert not well_separated(0.375, [Mistake(0.4249, "", "a")])
+    assert not parts_separated([("x", 0.375, [Mistake(0.4249, "", "a")])])
 
 
 def test_diagnose_parts_names_the_slip_and_the_numbers():

@@ -445,6 +445,24 @@ def test_bvh_handles_rays_parallel_to_box_faces_and_shared_bvh_reuse():
         np.testing.assert_array_equal(a.t, b.t)
 
 
+@pytest.mark.parametrize("leaf_size", [1, 3])
+def test_bvh_median_split_sends_equal_centres_left_by_triangle_index(leaf_size):
+    # equal triangles strung along x, many at the same x: every split is along x and most meet
+    # ties at the median. Ties go left by lower triangle index (not in the order of whichever
+    # CPU-specific partition kernel numpy picks), so leaf by leaf from left to right the
+    # triangles are those sorted by (x, index)
+    x = RNG(3).integers(0, 5, 60).astype(float)
+    shape = np.array([[0.0, 0.0, 0.0], [0.5, 0.0, 0.0], [0.0, 0.5, 0.0]])
+    tris = shape[None] + np.column_stack([x, np.zeros(60), np.zeros(60)])[:, None]
+    bvh = vis.BVH(tris, leaf_size=leaf_size)
+    expected = sorted(range(60), key=lambda i: (x[i], i))
+    leaves = sorted(map(tuple, bvh._spans[bvh.children[:, 0] < 0]))   # (start, end) in _order
+    assert [s for s, _ in leaves] == [0] + [e for _, e in leaves[:-1]] and leaves[-1][1] == 60
+    for s, e in leaves:
+        assert 1 <= e - s <= leaf_size
+        assert sorted(bvh._order[s:e].tolist()) == sorted(expected[s:e])
+
+
 # ---------------------------------------------------------------------------------------------
 # the three hidden-surface methods agree
 # ---------------------------------------------------------------------------------------------

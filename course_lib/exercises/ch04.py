@@ -27,8 +27,8 @@ import numpy as np
 from .. import format as fmt
 from .. import transforms as tf
 from .. import viewing
-from .core import (APART, DECIMALS, DrawnExercise, Mistake, data_note, diagnose_parts, pick,
-                   small_ints)
+from .core import (APART, DECIMALS, SAME, DrawnExercise, Mistake, data_note, diagnose_parts,
+                   pick, small_ints)
 
 __all__ = [
     "EXERCISES",
@@ -1047,8 +1047,10 @@ class CrossRatioUnderProjection(DrawnExercise):
     def separated(self, mistakes):
         r, r_after, cr, _ = self.expected
         values = [r, 1 / r, r_after, 1 / r_after]
-        apart = all(abs(a - b) >= APART for i, a in enumerate(values) for b in values[i + 1:])
-        return apart and abs(cr - 1 / cr) >= APART
+        # APART up to rounding (SAME) is apart: the last bit must not pick the variant
+        apart = all(abs(a - b) >= APART - SAME for i, a in enumerate(values)
+                    for b in values[i + 1:])
+        return apart and abs(cr - 1 / cr) >= APART - SAME
 
     def _check(self, answer):
         return diagnose_parts(answer, self._parts(), "your answer",

@@ -818,9 +818,9 @@ def _distinct_only(expected, mistakes):
     """
     kept = []
     for m in mistakes:
-        if gap(m.value, expected) < APART:
+        if gap(m.value, expected) < APART - SAME:         # APART up to rounding is apart
             continue
-        twin = next((k for k in kept if gap(k.value, m.value) < APART), None)
+        twin = next((k for k in kept if gap(k.value, m.value) < APART - SAME), None)
         if twin is None:
             kept.append(Mistake(m.value, m.explanation, m.key))
         else:
@@ -1624,7 +1624,7 @@ class PaintersOrder(_Listed):
         self.depths = [-np.sort(rng.choice(np.arange(1, 16), size=3, replace=False))[::-1]
                        .astype(float) for _ in range(4)]
         farthest = [d.min() for d in self.depths]
-        self.expected = [int(i) for i in np.argsort(farthest)]
+        self.expected = [int(i) for i in np.argsort(farthest, kind="stable")]
 
     def mistakes(self):
         nearest = [d.max() for d in self.depths]
@@ -1634,12 +1634,12 @@ class PaintersOrder(_Listed):
              r"painted over by the farther ones. The painter paints the background first: "
              r"from the farthest polygon to the nearest. The eye looks down $-z_e$, so the "
              r"farthest point is the one with the **most negative** $z_e$.", "nearest first"),
-            ([int(i) for i in np.argsort(nearest)], r"You sorted by each polygon's nearest "
-             r"vertex. Depth sort keys each polygon by its **farthest** point (smallest "
-             r"$z_e$) and draws those first.", "sorted by nearest vertex"),
-            ([int(i) for i in np.argsort(mean)], r"You sorted by the average depth of the "
-             r"vertices. The depth sort described here keys each polygon by its **farthest** "
-             r"vertex (smallest $z_e$).", "sorted by average depth"),
+            ([int(i) for i in np.argsort(nearest, kind="stable")], r"You sorted by each "
+             r"polygon's nearest vertex. Depth sort keys each polygon by its **farthest** "
+             r"point (smallest $z_e$) and draws those first.", "sorted by nearest vertex"),
+            ([int(i) for i in np.argsort(mean, kind="stable")], r"You sorted by the average "
+             r"depth of the vertices. The depth sort described here keys each polygon by its "
+             r"**farthest** vertex (smallest $z_e$).", "sorted by average depth"),
         ]
 
     def _farthest(self):
@@ -1736,8 +1736,8 @@ class PainterFailure(_Listed):
             segments.append([float(x0), float(d0), float(x1), float(d1)])
         self.segments = np.array(segments)
         self._coverage = _strip_coverage(self.segments)
-        self.order = [int(k) for k in np.argsort(-np.maximum(self.segments[:, 1],
-                                                             self.segments[:, 3]))]
+        far = np.maximum(self.segments[:, 1], self.segments[:, 3])
+        self.order = [int(k) for k in np.argsort(-far, kind="stable")]
         self.correct = [min(here, key=here.get) if here else -1 for here in self._coverage]
         self.painted = _paint(self._coverage, self.order)
         self.expected = {i for i in range(_STRIP) if self.painted[i] != self.correct[i]}

@@ -1220,7 +1220,9 @@ class OptimalPosition(_TwoVertices):
         if self.expected is None:
             return False
         x, cost = self.expected[:3], self.expected[3]
-        return (cost > 0.1 and np.abs(x).max() <= 6
+        # bounds up to rounding (SAME): a cost of exactly 0.1 must not pass or fail by the last
+        # bit, which depends on the CPU's LAPACK/BLAS kernels
+        return (cost > 0.1 - SAME and np.abs(x).max() <= 6 + SAME
                 and not close(x, self.v1) and not close(x, self.v2))
 
     def _parts(self):

@@ -30,7 +30,8 @@ import numpy as np
 
 from .. import format as fmt
 from .. import raytracing as rt
-from .core import (APART, DECIMALS, DrawnExercise, Mistake, PartsAnswer, data_note, hinted, pick)
+from .core import (APART, DECIMALS, SAME, DrawnExercise, Mistake, PartsAnswer, data_note, hinted,
+                   pick)
 
 __all__ = [
     "EXERCISES",
@@ -479,7 +480,7 @@ class SchlickReflectance(_Chapter15):
                     r"$(1 - R_0)(1 - \cos\theta)^5$.", "R0 only"),
         ]
         forgot = r0 + (1 - c) ** 5
-        if abs(forgot - self.expected) >= APART:       # R0 (1 - c)^5 is small for low R0
+        if abs(forgot - self.expected) >= APART - SAME:    # R0 (1 - c)^5 is small for low R0
             found.append(Mistake(forgot, r"The factor $(1 - R_0)$ is missing: "
                                  r"$F = R_0 + (1 - R_0)(1 - \cos\theta)^5$, so that $F = 1$ "
                                  r"at grazing incidence.", "no (1 - R0)"))

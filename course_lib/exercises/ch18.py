@@ -235,9 +235,9 @@ class SquareCrossings(_Chapter18):
 
     def separated(self, mistakes):
         live = [m for m in mistakes if _pair_gap(m.value, self.expected) > SAME]
-        if any(_pair_gap(m.value, self.expected) < APART for m in live):
-            return False
-        return all(_pair_gap(a.value, b.value) >= APART
+        if any(_pair_gap(m.value, self.expected) < APART - SAME for m in live):
+            return False                        # APART up to rounding (SAME) is apart
+        return all(_pair_gap(a.value, b.value) >= APART - SAME
                    for a, b in itertools.combinations(live, 2))
 
     def keep(self, mistakes):

@@ -57,7 +57,10 @@ __all__ = [
 #: Default absolute tolerance: answers computed by hand to 3 decimals pass.
 ATOL = 2e-3
 #: When the variants are drawn, answers closer than SAME count as the same answer, and every
-#: anticipated mistake must be at least APART from the right answer and from the other mistakes.
+#: anticipated mistake must be at least APART from the right answer and from the other mistakes
+#: (a distance within SAME of APART counts as APART: nice numbers are often exactly APART apart,
+#: and the last bit of a computed distance depends on the CPU's BLAS and SIMD kernels, which must
+#: not decide which variant a seed gives).
 SAME, APART = 1e-9, 0.05
 #: How many draws a :class:`DrawnExercise` tries before it gives up.
 MAX_DRAWS = 500
@@ -594,8 +597,9 @@ def well_separated(expected, mistakes, may_coincide=(), sign_free=False, project
 
     A mistake whose key is in `may_coincide` may give exactly the right answer in some variants
     (then it is simply right); otherwise each mistake must differ from the right answer by at
-    least ``APART`` (0.05, far more than the rounding of a hand computation), and the mistakes
-    of different keys must differ from each other by as much. Distances are measured by
+    least ``APART`` (0.05, far more than the rounding of a hand computation; exactly 0.05 up to
+    rounding is enough, so that the CPU's last bit never decides), and the mistakes of different
+    keys must differ from each other by as much. Distances are measured by
     :func:`gap`, with the same `sign_free` and `projective` (for two mistakes: either way round).
 
     Parameters
@@ -629,12 +633,12 @@ def well_separated(expected, mistakes, may_coincide=(), sign_free=False, project
         distance = gap(mistake.value, expected, sign_free, projective)
         if distance <= SAME and mistake.key in may_coincide:
             continue
-        if distance < APART:
+        if distance < APART - SAME:
             return False
         live.append(mistake)
     for i, mistake in enumerate(live):
         for other in live[i + 1:]:
-            if other.key != mistake.key and apart(mistake.value, other.value) < APART:
+            if other.key != mistake.key and apart(mistake.value, other.value) < APART - SAME:
                 return False
     return True
 
@@ -944,12 +948,12 @@ def parts_separated(parts, same=SAME, apart=APART):
             d = abs(float(m.value) - float(expected))
             if same is not None and d <= same:
                 continue
-            if d < apart:
+            if d < apart - SAME:                  # exactly `apart`, up to rounding, is apart
                 return False
             live.append(m)
         for i, a in enumerate(live):
             for b in live[i + 1:]:
-                if a.key != b.key and abs(float(a.value) - float(b.value)) < apart:
+                if a.key != b.key and abs(float(a.value) - float(b.value)) < apart - SAME:
                     return False
     return True
 
