@@ -553,6 +553,13 @@ def _first_root(near, far, t_min):
     return np.where(near >= t_min, near, np.where(far >= t_min, far, np.inf))
 
 
+def _before(t, t_max):
+    """Hits at `t` that lie no farther than `t_max`. A miss is encoded as ``t = inf``, and a
+    shadow ray towards a directional light has ``t_max = inf``: ``inf <= inf`` is true, so a
+    plain comparison would let every missed object block such a ray."""
+    return np.isfinite(t) & (t <= t_max)
+
+
 def intersect_sphere(origins, directions, center, radius, t_min=0.0):
     r"""Ray-sphere intersection: the nearest hit at or beyond `t_min` of each ray.
 
@@ -1735,11 +1742,10 @@ class _Compiled:
         transparencies of the objects in the way (0 as soon as an opaque one blocks)."""
         trans = np.ones(len(o))
         for k, c, r in self.spheres:
-            near, far = _sphere_roots(o, d, c, r)
-            blocked = ((near >= 0) & (near <= t_max)) | ((far >= 0) & (far <= t_max))
+            blocked = _before(_first_root(*_sphere_roots(o, d, c, r), 0.0), t_max)
             trans[blocked] *= self.transparency_of[k]
         for k, plane in self.planes:
-            blocked = _plane_t(o, d, plane.point, plane.normal, 0.0) <= t_max
+            blocked = _before(_plane_t(o, d, plane.point, plane.normal, 0.0), t_max)
             trans[blocked] *= self.transparency_of[k]
         for k, mesh in self.meshes:
             open_ = np.nonzero(trans > 0)[0]

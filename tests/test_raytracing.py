@@ -411,6 +411,65 @@ def test_shadow_ray_leaves_only_the_ambient_term():
                                rtol=1e-12)
 
 
+def test_directional_light_above_a_plane_lights_it_by_hand():
+    """The issue's case: a plane under a directional light straight above. No object is in
+    the way, so the pixel is k_a + k_d N.L + k_s (R.V)^n with N = L = (0, 1, 0)."""
+    m = shading.Material()                              # k_a 0.1, k_d 0.7, k_s 0.2
+    scene = rt.Scene([rt.Plane([0, 0, 0], [0, 1, 0])], [shading.directional_light([0, 1, 0])])
+    camera = rt.Camera([0, 1, 3], [0, -1, -3], [0, 1, 0], 0.5, 4, 4)
+    image = rt.render(scene, camera, max_depth=0)
+    # pixel (2, 2): its primary ray, and the viewer direction at its hit point
+    o, d = camera.rays().origins[2, 2, 0], camera.rays().directions[2, 2, 0]
+    hit = o + (-o[1] / d[1]) * d
+    v = unit(o - hit)
+    r = np.array([0.0, 1.0, 0.0])                       # L reflected about N = N
+    expected = m.ka + m.kd + m.ks * max(float(r @ v), 0.0) ** m.shininess
+    np.testing.assert_allclose(image[2, 2], expected, rtol=1e-12)
+
+
+def _side_by_side_scene():
+    """A plane facing +z and three spheres in a row in front of it, lit along +z (from where
+    the camera looks): every shadow ray leaves towards the light and passes nothing."""
+    spheres = [rt.Sphere([x, 0.0, 0.0], 0.6) for x in (-1.5, 0.0, 1.5)]
+    return rt.Scene(spheres, [shading.directional_light([0, 0, 1])])
+
+
+@pytest.mark.parametrize("kind", ["plane", "spheres", "plane and point light"])
+def test_an_unoccluded_directional_light_casts_no_shadow(kind):
+    """With nothing between any visible point and the light, shadow rays change nothing:
+    the image with shadow rays equals the image without (a missed object, t = inf, must never
+    count as blocking a ray whose t_max is inf)."""
+    camera = rt.Camera([0, 0.5, 6], [0, -0.08, -1], [0, 1, 0], np.radians(50), 48, 32)
+    if kind == "plane":
+        scene = rt.Scene([rt.Plane([0, -1, 0], [0, 1, 0])],
+                         [shading.directional_light([0.3, 1, 0.2])])
+    elif kind == "spheres":
+        scene = _side_by_side_scene()
+    else:       # a directional light and a point light above a plane with no object on it
+        scene = rt.Scene([rt.Plane([0, -1, 0], [0, 1, 0])],
+                         [shading.directional_light([0, 1, 1]), shading.point_light([0, 4, 2])])
+    with_shadows = rt.render(scene, camera, max_depth=0, shadows=True)
+    without = rt.render(scene, camera, max_depth=0, shadows=False)
+    assert (with_shadows > 0.11).mean() > 0.05          # lit: more than the ambient term
+    np.testing.assert_array_equal(with_shadows, without)
+
+
+def test_spheres_in_a_row_have_no_shadowed_point_facing_the_light():
+    """Every shadow ray of the side-by-side spheres, cast where N.L > 0, reaches the light."""
+    scene = _side_by_side_scene()
+    light = scene.lights[0].direction
+    cast = 0
+    for x in np.linspace(-2.0, 2.0, 17):
+        for y in np.linspace(-0.5, 0.5, 5):
+            tree = rt.trace_tree(scene, [x, y, 5.0], [0, 0, -1], max_depth=0)
+            for node in tree.children:
+                assert node.kind == "shadow"
+                assert tree.normal @ light > 0          # only lights in front get a ray
+                assert node.visibility == 1.0, (x, y)
+                cast += 1
+    assert cast > 20
+
+
 def test_mirror_shows_the_object_in_the_mirror_direction():
     mirror = rt.Plane([0, 0, 0], [0, 0, 1],
                       rt.Material(shading.Material(0, 0, 0), reflectivity=1.0))
