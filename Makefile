@@ -6,7 +6,8 @@
 #                widget tests and nbval over notebooks/, solutions/ and exercises/
 #
 # Other targets: make exercises (rebuild exercises/ from solutions/), make notebooks (re-execute
-# every notebook and store its outputs), make benchmarks, make clean.
+# every notebook and store its outputs), make benchmarks, make binder-dockerfile (the Dockerfile
+# Binder builds), make clean (also removes build/runtime-venv, the tests' runtime-only venv).
 
 PYTHON ?= python3
 VENV   ?= .venv
@@ -16,7 +17,8 @@ PYTEST_ARGS ?=
 # JupyterLab refuses to run as root unless told (containers, some lab machines)
 LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
-.PHONY: lab lecture screenshots test system-packages exercises notebooks benchmarks clean
+.PHONY: lab lecture screenshots test system-packages exercises notebooks benchmarks clean \
+        binder-dockerfile
 
 lab: $(STAMP)
 	@scripts/system-packages --warn-only --no-browser
@@ -57,6 +59,12 @@ notebooks: $(STAMP)
 benchmarks: $(STAMP)
 	@scripts/system-packages
 	$(BIN)/python -m benchmarks
+
+# the Dockerfile Binder builds from apt.txt, environment.yml, postBuild and start, printed by
+# repo2docker without a container engine (as on mybinder.org: user jovyan, uid 1000);
+# tests/test_routes.py checks it
+binder-dockerfile: $(STAMP)
+	$(BIN)/repo2docker --no-build --debug --user-id 1000 --user-name jovyan .
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache

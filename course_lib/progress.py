@@ -1,13 +1,35 @@
 r"""A student's progress: mock-exam results kept in a small JSON file in the user's data folder.
 
-The file lives outside the repository, in the platform's folder for user data:
-``$XDG_DATA_HOME/graphics-course/progress.json`` (``~/.local/share/...`` when the variable is
-unset) on Linux and other Unix systems, ``~/Library/Application Support/graphics-course/`` on
-macOS and ``%APPDATA%\graphics-course\`` on Windows. The environment variable
-``COURSE_PROGRESS_FILE``, or the ``path`` argument of every function, chooses another file (the
-tests use a temporary one); a path inside the course repository is refused, so that personal
-results never end up in a commit.
+Where the file lives
+--------------------
+By default in the platform's folder for user data: ``$XDG_DATA_HOME/graphics-course/progress.json``
+(``~/.local/share/...`` when the variable is unset) on Linux and other Unix systems,
+``~/Library/Application Support/graphics-course/`` on macOS and ``%APPDATA%\graphics-course\`` on
+Windows. The environment variable ``COURSE_PROGRESS_FILE``, or the ``path`` argument of every
+function, chooses another file (the tests use a temporary one).
 
+Personal results must never end up in a commit, so a file inside the course repository is
+refused, with one exception: the repository's per-user folders :data:`USER_FOLDERS`
+(``.local/``, ``.cache/``, ``.config/``, ``.jupyter/``, ``.ipython/`` at its top level). Those
+are the folders that programs create in the home folder, and on Binder (or any hub that copies
+the course into the home folder) the home folder *is* the repository: the default file is then
+``<repository>/.local/share/graphics-course/progress.json``. The repository's ``.gitignore``
+excludes every one of these folders, so a file in them cannot be committed by accident
+(``tests/test_progress.py`` checks each with ``git check-ignore``, so that this list and
+``.gitignore`` cannot drift apart). Any other place in the repository (next to the notebooks, in
+``course_lib/``) stays refused with a :class:`ValueError`.
+
+When the default folder cannot be written (a hub with a read-only home folder, a data folder
+on a read-only file system), the results of the session go to a per-user file in the system's
+temporary folder, ``<tmp>/graphics-course-<uid>/progress.json``, so that the start page and the
+mock exam still work; saving an exam there issues a :class:`ProgressFileWarning` (the mock
+exam's widget shows it) and the progress report says so, both naming ``COURSE_PROGRESS_FILE``,
+the variable to set to keep the results: a temporary file may be lost when the server stops.
+A file chosen explicitly (the variable or ``path``) is never redirected: when it cannot be
+written, :func:`record_exam` raises an :class:`OSError` that names the file and the variable.
+
+Writing
+-------
 Writing is atomic: the new content goes to a temporary file in the same folder, is flushed to
 disk (``fsync``) and then replaces the old file in one step (``os.replace``), so a crash or a
 killed kernel leaves either the old file or the new one, never half of one. A file that cannot
@@ -19,6 +41,7 @@ The file holds ``{"format": "graphics-course-progress", "version": 1, "exams": [
 record per exam as made by :meth:`course_lib.exercises.mock.Exam.record` plus its ``date``.
 """
 import contextlib
+import errno
 import json
 import os
 import sys
@@ -27,8 +50,8 @@ import warnings
 from datetime import datetime, timezone
 from pathlib import Path
 
-__all__ = ["ENV_VAR", "FORMAT", "VERSION", "ProgressFileWarning", "chapter_scores",
-           "progress_path", "progress_report", "read_history", "record_exam",
+__all__ = ["ENV_VAR", "FORMAT", "USER_FOLDERS", "VERSION", "ProgressFileWarning",
+           "chapter_scores", "progress_path", "progress_report", "read_history", "record_exam",
            "weakest_chapters"]
 
 #: The environment variable that chooses the progress file.
@@ -37,6 +60,10 @@ ENV_VAR = "COURSE_PROGRESS_FILE"
 FORMAT = "graphics-course-progress"
 #: The version of the file format this module reads and writes.
 VERSION = 1
+#: The repository's top-level folders where a progress file may lie: the per-user folders that
+#: programs create in the home folder, which is the repository on Binder. ``.gitignore`` must
+#: exclude each one (``tests/test_progress.py`` checks it with ``git check-ignore``).
+USER_FOLDERS = (".local", ".cache", ".config", ".jupyter", ".ipython")
 _APP = "graphics-course"
 _FILE = "progress.json"
 _EXAM_KEYS = {"date": str, "seed": int, "chapters": list, "n_questions": int, "score": dict,
@@ -71,8 +98,81 @@ def _repository_root():
         else None
 
 
+def _in_user_folder(file, root):
+    """Whether `file` (resolved, inside `root`) lies in one of the :data:`USER_FOLDERS`."""
+    parts = file.relative_to(root).parts
+    return len(parts) > 1 and parts[0] in USER_FOLDERS
+
+
+def _unwritable(folder):
+    """Why `folder` can be neither written nor created, or None if it can (nothing is made).
+
+    The folder, or else its nearest existing ancestor, must be a folder this user may write in.
+    """
+    for candidate in (folder, *folder.parents):
+        if os.path.exists(candidate):
+            if not os.path.isdir(candidate):
+                return f"{candidate} is not a folder"
+            if not os.access(candidate, os.W_OK | os.X_OK):
+                return f"{candidate} is read-only"
+            return None
+    return f"none of {folder}'s parent folders exists"
+
+
+def _temporary_file():
+    """The per-user progress file of the session when the data folder cannot be written."""
+    user = os.getuid() if hasattr(os, "getuid") else os.environ.get("USERNAME", "user")
+    return Path(tempfile.gettempdir()).resolve() / f"{_APP}-{user}" / _FILE
+
+
+def _locate(path=None):
+    """``(file, note, name)``: the progress file, why it is a temporary one (None if it is not),
+    and what chose it (``"path"``, the variable's name, or ``"the default progress file"``).
+
+    See :func:`progress_path` for the rules.
+    """
+    default = False
+    if path is None:
+        env = os.environ.get(ENV_VAR, "").strip()
+        default = not env
+        path = env or _data_home() / _APP / _FILE
+        name = ENV_VAR if env else "the default progress file"
+    else:
+        name = "path"
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path must be a file path (str or os.PathLike), got "
+                        f"{type(path).__name__}")
+    resolved = Path(path).expanduser().resolve()
+    root = _repository_root()
+    if root is not None and resolved.is_relative_to(root) \
+            and not _in_user_folder(resolved, root):
+        folders = ", ".join(f"{f}/" for f in USER_FOLDERS)
+        raise ValueError(f"{name} ({resolved}) lies inside the course repository ({root}); "
+                         "progress is personal data: keep it in your data folder, a "
+                         "temporary folder, or one of the repository's git-ignored per-user "
+                         f"folders ({folders})")
+    if default:
+        reason = _unwritable(resolved.parent)
+        if reason is not None:
+            return _temporary_file(), (
+                f"your data folder {resolved.parent} cannot be written ({reason})"), name
+    return resolved, None, name
+
+
+def _keep_hint():
+    """What to do to keep the results: the variable to set, and how."""
+    return (f"set the environment variable {ENV_VAR} to a file in a folder you can write "
+            f"(in a notebook: import os; os.environ[{ENV_VAR!r}] = "
+            "'/a/writable/folder/progress.json') to keep your results")
+
+
 def progress_path(path=None):
     """The progress file: `path`, else ``$COURSE_PROGRESS_FILE``, else the user's data folder.
+
+    A file inside the course repository is refused unless it lies in one of its git-ignored
+    per-user folders (:data:`USER_FOLDERS`; on Binder the home folder is the repository). When
+    the default folder cannot be written, the session's results go to a per-user temporary
+    file instead (see the module's documentation).
 
     Parameters
     ----------
@@ -88,7 +188,7 @@ def progress_path(path=None):
     TypeError
         If `path` is not a path.
     ValueError
-        If the file would lie inside the course repository.
+        If the file would lie inside the course repository, outside its per-user folders.
 
     Examples
     --------
@@ -105,22 +205,7 @@ def progress_path(path=None):
     >>> if saved is None: del os.environ["COURSE_PROGRESS_FILE"]
     ... else: os.environ["COURSE_PROGRESS_FILE"] = saved
     """
-    if path is None:
-        env = os.environ.get(ENV_VAR, "").strip()
-        path = env or _data_home() / _APP / _FILE
-        name = ENV_VAR if env else "the default progress file"
-    else:
-        name = "path"
-    if not isinstance(path, (str, os.PathLike)):
-        raise TypeError(f"path must be a file path (str or os.PathLike), got "
-                        f"{type(path).__name__}")
-    resolved = Path(path).expanduser().resolve()
-    root = _repository_root()
-    if root is not None and resolved.is_relative_to(root):
-        raise ValueError(f"{name} ({resolved}) lies inside the course repository ({root}); "
-                         "progress is personal data: keep it in your data folder or a "
-                         "temporary folder")
-    return resolved
+    return _locate(path)[0]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -228,10 +313,37 @@ def _fsync_folder(folder):
         os.close(fd)
 
 
-def _write_atomic(file, data):
-    """Write `data` as JSON to `file` atomically: temporary file, fsync, os.replace."""
-    file.parent.mkdir(parents=True, exist_ok=True)
-    fd, temporary = tempfile.mkstemp(dir=file.parent, prefix=f".{file.name}.", suffix=".tmp")
+def _private_folder(folder):
+    """Make `folder` for this user only (mode 0700), refusing one that another user owns.
+
+    The session's temporary progress file lives in the shared temporary folder, where anyone
+    could have made a folder of that name first.
+    """
+    folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+    if hasattr(os, "getuid"):
+        info = os.lstat(folder)
+        if os.path.islink(folder) or info.st_uid != os.getuid():
+            raise PermissionError(errno.EACCES, f"{folder} belongs to another user")
+
+
+def _write_atomic(file, data, private=False, chosen=None):
+    """Write `data` as JSON to `file` atomically: temporary file, fsync, os.replace.
+
+    `private`: `file` is the session's temporary file (its folder is made for this user only).
+    An error making the folder or the temporary file names `file`, what `chosen` it, and what
+    to do about it.
+    """
+    try:
+        if private:
+            _private_folder(file.parent)
+        else:
+            file.parent.mkdir(parents=True, exist_ok=True)
+        fd, temporary = tempfile.mkstemp(dir=file.parent, prefix=f".{file.name}.",
+                                         suffix=".tmp")
+    except OSError as exc:
+        by = f" (chosen by {chosen})" if chosen else ""
+        raise type(exc)(exc.errno, f"cannot write the progress file {file}{by}: "
+                        f"{exc.strerror or exc}; {_keep_hint()}") from exc
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as handle:
             json.dump(data, handle, indent=1, sort_keys=True)
@@ -280,6 +392,14 @@ def record_exam(result, path=None, when=None):
     ------
     TypeError, ValueError
         If `result` is not an exam record (nothing is written then).
+    OSError
+        If the file cannot be written; the message names the file and ``COURSE_PROGRESS_FILE``.
+
+    Warns
+    -----
+    ProgressFileWarning
+        When the default data folder cannot be written and the result went to the session's
+        temporary file instead (see the module's documentation).
 
     Examples
     --------
@@ -300,10 +420,15 @@ def record_exam(result, path=None, when=None):
     reason = _problem({"format": FORMAT, "version": VERSION, "exams": [record]})
     if reason is not None:
         raise ValueError(f"result is not an exam record: {reason.replace('exam 0', 'it')}")
-    file = progress_path(path)
+    file, note, chosen = _locate(path)
     exams = _load(file)
     exams.append(record)
-    _write_atomic(file, {"format": FORMAT, "version": VERSION, "exams": exams})
+    _write_atomic(file, {"format": FORMAT, "version": VERSION, "exams": exams},
+                  private=note is not None, chosen=chosen)
+    if note is not None:
+        warnings.warn(f"{note[0].upper()}{note[1:]}, so this result was saved to {file}, a "
+                      "temporary file for this session only (it may be lost when the server "
+                      f"stops): {_keep_hint()}.", ProgressFileWarning, stacklevel=2)
     return record
 
 
@@ -394,13 +519,17 @@ def progress_report(path=None):
     >>> "chapter 5 (0 of 1 right)" in progress_report(file)
     True
     """
-    file = progress_path(path)
+    file, note, _ = _locate(path)
     history = read_history(file)
     shown = _short(file)
+    warning = [] if note is None else [
+        "", f"**Note:** {note}, so your results are kept in `{shown}`, a temporary file for "
+        f"this session only (it may be lost when the server stops): {_keep_hint()}."]
     if not history:
-        return (f"**No results yet.** There is no progress file at `{shown}` (or it holds no "
-                "exam): take a mock exam in `notebooks/mock_exam.ipynb`, and your scores per "
-                "chapter will show up here.")
+        return "\n".join([
+            f"**No results yet.** There is no progress file at `{shown}` (or it holds no "
+            "exam): take a mock exam in `notebooks/mock_exam.ipynb`, and your scores per "
+            "chapter will show up here.", *warning])
     scores = chapter_scores(history)
     last = history[-1]
     lines = [f"**{len(history)} mock exam{'s' if len(history) > 1 else ''} taken**, the last "
@@ -420,4 +549,4 @@ def progress_report(path=None):
         lines += ["", "To revisit from the last exam: "
                   + "; ".join(item.get("label", item.get("key", "?"))
                               for item in last["revisit"]) + "."]
-    return "\n".join(lines)
+    return "\n".join(lines + warning)

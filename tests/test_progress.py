@@ -3,6 +3,7 @@ midway, corrupt and foreign files reported and set aside (never overwritten), an
 summaries (weakest chapters computed by hand here)."""
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -247,3 +248,199 @@ def test_weakest_chapters_read_from_the_file_and_the_report():
     report = progress.progress_report()
     assert "1 mock exam taken" in report and "| 4 | 0 | 2 | 0% |" in report
     assert "chapter 4 (0 of 2 right)" in report and "Chapter 3: Compose (variant 12)" in report
+
+
+# --- Binder and hub layouts: HOME is the repository, or cannot be written -------------------
+
+GIT = ("git", "-c", "core.excludesFile=/dev/null", "-c", "user.name=course tests",
+       "-c", "user.email=tests@example.invalid", "-c", "commit.gpgsign=false",
+       "-c", "init.defaultBranch=main")
+
+
+def _needs_git():
+    if shutil.which("git") is None:
+        pytest.skip("git is not installed: it is needed to ask what .gitignore excludes")
+
+
+def _git(folder, *args, check=True):
+    return subprocess.run([*GIT, *args], cwd=folder, capture_output=True, text=True,
+                          check=check)
+
+
+def test_every_user_folder_allowed_in_the_repository_is_ignored_by_gitignore(tmp_path):
+    """The rule (USER_FOLDERS) and .gitignore cannot drift apart: git itself, given only the
+    repository's .gitignore, must ignore a progress file in every allowed folder."""
+    _needs_git()
+    assert ".local" in progress.USER_FOLDERS          # the default ~/.local/share/... needs it
+    only_gitignore = tmp_path / "repo"
+    only_gitignore.mkdir()
+    shutil.copy(ROOT / ".gitignore", only_gitignore / ".gitignore")
+    _git(only_gitignore, "init", "-q")
+
+    def ignored(name):
+        return _git(only_gitignore, "check-ignore", "-q", name, check=False).returncode == 0
+
+    for folder in progress.USER_FOLDERS:
+        name = f"{folder}/share/graphics-course/progress.json"
+        assert ignored(name), f"{folder}/ is allowed for the progress file but not in .gitignore"
+        assert progress.progress_path(ROOT / name) == (ROOT / name).resolve()   # allowed
+        nested = ROOT / "notebooks" / folder / "progress.json"         # not at the top: refused
+        assert not ignored(str(nested.relative_to(ROOT)))
+        with pytest.raises(ValueError, match="inside the course repository"):
+            progress.progress_path(nested)
+    for name in ("progress.json", "notebooks/progress.json", "course_lib/progress.json",
+                 ".localx/progress.json"):
+        assert not ignored(name), f"the check is meaningless: git ignores {name}"
+        with pytest.raises(ValueError, match="inside the course repository"):
+            progress.progress_path(ROOT / name)
+
+
+def _copy_of_course(target):
+    """What the progress module needs of the repository: course_lib, pyproject, .gitignore."""
+    shutil.copytree(ROOT / "course_lib", target / "course_lib",
+                    ignore=shutil.ignore_patterns("__pycache__"))
+    for name in ("pyproject.toml", ".gitignore"):
+        shutil.copy(ROOT / name, target / name)
+    return target
+
+
+RECORD = """
+import json, warnings
+from course_lib import progress
+from course_lib.exercises import mock_exam
+
+exam = mock_exam(5, chapters=[3], n_questions=2)
+for i in range(len(exam)):
+    exam.submit(i, "")
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    try:
+        progress.record_exam(exam)
+        error = None
+    except OSError as exc:
+        error = str(exc)
+print(json.dumps({"module": progress.__file__, "file": str(progress.progress_path()),
+                  "error": error, "exams": len(progress.read_history()),
+                  "warnings": [str(w.message) for w in caught
+                               if issubclass(w.category, progress.ProgressFileWarning)],
+                  "report": progress.progress_report()}))
+"""
+
+
+def _run(script, env, cwd, prefix=()):
+    """Run `script` in a fresh interpreter in `cwd` with exactly `env` (plus PATH); its JSON
+    answer. (Not in the repository: `python -c` imports from its working folder first.)"""
+    env = {"PATH": os.environ.get("PATH", ""), **env}
+    done = subprocess.run([*prefix, sys.executable, "-c", script], env=env, cwd=cwd,
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-3000:]
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def test_with_home_in_a_copy_of_the_repository_the_exam_lands_in_an_ignored_folder(tmp_path):
+    """Binder's layout: HOME is the repository, no XDG_DATA_HOME, no COURSE_PROGRESS_FILE."""
+    _needs_git()
+    home = _copy_of_course(tmp_path / "jovyan")
+    _git(home, "init", "-q")
+    _git(home, "add", "-A")
+    _git(home, "commit", "-q", "-m", "the course")
+    answer = _run(RECORD, {"HOME": str(home), "PYTHONPATH": str(home)}, cwd=home)
+    assert Path(answer["module"]).is_relative_to(home)       # course_lib of the copy
+    expected = home / ".local" / "share" / "graphics-course" / "progress.json"
+    assert answer["error"] is None and answer["warnings"] == []
+    assert Path(answer["file"]) == expected.resolve() and answer["exams"] == 1
+    assert json.loads(expected.read_text())["exams"][0]["seed"] == 5
+    assert "`~/.local/share/graphics-course/progress.json`" in answer["report"]
+    assert _git(home, "status", "--porcelain", "--untracked-files=all").stdout == ""
+    assert _git(home, "check-ignore", "-q", str(expected), check=False).returncode == 0
+
+
+def _read_only(folder):
+    """A command prefix under which `folder` is read-only, for root as well (a bind mount in a
+    private mount namespace); None when this machine cannot make one."""
+    if os.geteuid() != 0:
+        folder.chmod(0o555)
+        return ()
+    unshare = shutil.which("unshare")
+    if unshare is None:
+        return None
+    prefix = (unshare, "--mount", "sh", "-c",
+              'mount --bind -o ro "$0" "$0" && exec "$@"', str(folder))
+    probe = subprocess.run([*prefix, "sh", "-c", 'touch "$0/probe"', str(folder)],
+                           capture_output=True, text=True)
+    return prefix if probe.returncode != 0 and "Read-only" in probe.stderr else None
+
+
+def test_a_read_only_home_gives_a_temporary_file_and_says_which_variable_to_set(tmp_path):
+    home = tmp_path / "home"
+    home.mkdir()
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    prefix = _read_only(home)
+    if prefix is None:
+        pytest.skip("cannot make a read-only folder here (root without unshare/mount)")
+    try:
+        env = {"HOME": str(home), "PYTHONPATH": str(ROOT), "TMPDIR": str(temporary)}
+        answer = _run(RECORD, env, tmp_path, prefix)
+        fallback = temporary / f"graphics-course-{os.getuid()}" / "progress.json"
+        assert answer["error"] is None, answer["error"]
+        assert Path(answer["file"]) == fallback.resolve() and answer["exams"] == 1
+        assert json.loads(fallback.read_text())["exams"][0]["seed"] == 5
+        assert fallback.parent.stat().st_mode & 0o777 == 0o700      # this user's only
+        [warning] = answer["warnings"]
+        for text in (warning, answer["report"]):
+            assert f"{home / '.local' / 'share' / 'graphics-course'} cannot be written" in text
+            assert "temporary file for this session only" in text
+            assert "COURSE_PROGRESS_FILE" in text
+        assert answer["report"].startswith("**1 mock exam taken**")
+        # a file chosen explicitly is never redirected: a clear error naming the variable
+        chosen = {**env, "COURSE_PROGRESS_FILE": str(home / "mine" / "progress.json")}
+        answer = _run(RECORD, chosen, tmp_path, prefix)
+        assert answer["error"] is not None and answer["exams"] == 0
+        assert f"cannot write the progress file {home / 'mine' / 'progress.json'}" \
+            in answer["error"]
+        assert "(chosen by COURSE_PROGRESS_FILE)" in answer["error"]
+        assert "set the environment variable COURSE_PROGRESS_FILE" in answer["error"]
+        assert list(home.iterdir()) == []                           # nothing was written
+    finally:
+        home.chmod(0o755)
+
+
+def test_a_data_folder_that_cannot_be_created_falls_back_to_a_temporary_file(tmp_path,
+                                                                             monkeypatch):
+    home = tmp_path / "home"
+    home.mkdir()
+    (home / ".local").write_text("a file where the data folder should be")
+    monkeypatch.setenv("HOME", str(home))
+    monkeypatch.delenv("XDG_DATA_HOME")
+    monkeypatch.delenv(progress.ENV_VAR)
+    monkeypatch.setattr(sys, "platform", "linux")
+    monkeypatch.setenv("TMPDIR", str(tmp_path / "tmp"))
+    monkeypatch.setattr(progress.tempfile, "tempdir", None)       # re-read TMPDIR
+    (tmp_path / "tmp").mkdir()
+    fallback = tmp_path / "tmp" / f"graphics-course-{os.getuid()}" / "progress.json"
+    assert progress.progress_path() == fallback.resolve()
+    assert progress.read_history() == [] and not fallback.parent.exists()   # reading makes none
+    with pytest.warns(progress.ProgressFileWarning, match=r"\.local is not a folder.*"
+                      r"temporary file for this session only.*COURSE_PROGRESS_FILE"):
+        progress.record_exam(record(7))
+    assert [e["seed"] for e in progress.read_history()] == [7]
+    assert "cannot be written" in progress.progress_report()
+    assert (home / ".local").read_text() == "a file where the data folder should be"
+
+
+def test_a_temporary_folder_of_another_user_is_refused(tmp_path, monkeypatch):
+    """Anyone may make folders in the shared temporary folder: never write into another's."""
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    (tmp_path / "home").write_text("not a folder")
+    monkeypatch.delenv("XDG_DATA_HOME")
+    monkeypatch.delenv(progress.ENV_VAR)
+    monkeypatch.setattr(sys, "platform", "linux")
+    monkeypatch.setenv("TMPDIR", str(tmp_path))
+    monkeypatch.setattr(progress.tempfile, "tempdir", None)
+    me = os.getuid() + 1                  # pretend to be another user than the folder's owner
+    (tmp_path / f"graphics-course-{me}").mkdir()
+    monkeypatch.setattr(os, "getuid", lambda: me)
+    with pytest.raises(PermissionError, match="belongs to another user.*COURSE_PROGRESS_FILE"):
+        progress.record_exam(record(8))
+    assert list((tmp_path / f"graphics-course-{me}").iterdir()) == []
