@@ -247,6 +247,36 @@ def test_fact_ch03_compose_and_inverse():
         assert np.allclose(R.T @ R, np.eye(3)) and not np.allclose(R @ R, np.eye(3))
 
 
+def explanation_of(key, option_start):
+    """The explanation of the option of question `key` whose text starts with `option_start`."""
+    q = BY_KEY[key]
+    matches = [e for o, e in zip(q.options, q.explanations) if o.startswith(option_start)]
+    assert len(matches) == 1, (key, option_start)
+    return matches[0]
+
+
+def test_fact_ch03_minus_r_is_the_inverse_only_for_2d_quarter_turns():
+    why = explanation_of("ch03-inverse-rotation", "$-R$")
+    assert "In 3D it never is" in why and "\\pm 90°" in why and "R^2 = -I" in why
+    # 2D, explicit matrices: a quarter turn either way squares to -I, so (-R) R = I there ...
+    for theta in (np.pi / 2, -np.pi / 2):
+        c, s = math.cos(theta), math.sin(theta)
+        R = np.array([[c, -s], [s, c]])
+        assert np.allclose(R @ R, -np.eye(2))
+        assert np.allclose((-R) @ R, np.eye(2)) and np.allclose(-R, R.T)
+    # ... and for no other 2D angle
+    for theta in np.linspace(0.1, 2 * np.pi - 0.1, 50):
+        if min(abs(theta - np.pi / 2), abs(theta - 3 * np.pi / 2)) < 1e-6:
+            continue
+        c, s = math.cos(theta), math.sin(theta)
+        R = np.array([[c, -s], [s, c]])
+        assert not np.allclose((-R) @ R, np.eye(2))
+    # 3D: det(-R R) = (-1)^3 det(R)^2 = -1, never the identity (random rotations by scipy)
+    for R in Rotation.random(50, random_state=4).as_matrix():
+        M = (-R) @ R
+        assert math.isclose(np.linalg.det(M), -1.0) and not np.allclose(M, np.eye(3))
+
+
 def test_fact_ch03_quaternions():
     # scipy is scalar-last (x, y, z, s)
     assert truth("ch03-quat-double-cover") and not truth("ch03-quat-commute")
@@ -598,6 +628,26 @@ def test_fact_ch15_reflection_refraction_sphere():
         hits, _, _ = sphere.ray.intersects_location([o], [d])
         ahead = disc > 0 and (-b + math.sqrt(disc)) / 2 > 0
         assert (len(hits) > 0) == ahead
+
+
+def test_fact_ch15_reflect_with_the_wrong_sign_triples_the_normal_part():
+    why = explanation_of("ch15-reflect", "$\\vec d + 2")
+    assert "keeps the tangential component and triples the normal one" in why
+    rng = np.random.default_rng(15)            # its own generator: the shared RNG's draws stay put
+    for _ in range(50):
+        n = rng.normal(size=3)
+        n /= np.linalg.norm(n)
+        d = rng.normal(size=3)
+        normal = (d @ n) * n
+        tangential = d - normal
+        wrong = d + 2 * (d @ n) * n
+        wrong_normal = (wrong @ n) * n
+        assert np.allclose(wrong - wrong_normal, tangential)        # tangential part unchanged
+        assert np.allclose(wrong_normal, 3 * normal)                # normal part tripled
+        assert not math.isclose(np.linalg.norm(wrong), np.linalg.norm(d))   # length not kept
+    # along the surface (d . n = 0) nothing changes at all, the only case with the length kept
+    n, d = np.array([0.0, 0.0, 1.0]), np.array([1.0, 2.0, 0.0])
+    assert np.allclose(d + 2 * (d @ n) * n, d)
 
 
 def test_fact_ch18_marching_squares_and_cubes_cases():

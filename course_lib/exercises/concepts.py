@@ -326,8 +326,11 @@ _ALL += [
         "What is the inverse of a rotation matrix $R$?",
         ("$R^T$, its transpose", "A rotation matrix is orthogonal (its columns are orthonormal), "
          "so $R^T R = I$: the transpose undoes it, as does rotating by $-\\theta$."),
-        ("$-R$", "$-R$ is a rotation combined with a point reflection through the origin; "
-         "$(-R)R = -R^2$ is not the identity."),
+        ("$-R$", "Not in general: $(-R)R = -R^2$, which is not the identity. In 3D it never is "
+         "($-R^2$ has determinant $-1$; $-R$ is a rotation combined with a point reflection "
+         "through the origin). In 2D a turn by $\\pm 90°$ has $R^2 = -I$, so there $-R$ happens "
+         "to be the inverse, because it equals $R^T$; the transpose is the rule that always "
+         "works."),
         ("$R$ itself", "Only rotations by $0$ or by $\\pi$ are their own inverse."),
         ("It has none: rotations are not invertible", "Every rotation is invertible: rotate back "
          "by the opposite angle."),
@@ -1030,7 +1033,10 @@ _ALL += [
         "into a single point (a pole).", True,
         "At the pole the longitude is undefined: all $u$ values meet there, so the texture is "
         "compressed and distorted near the poles.",
-        "It does: this pole singularity is unavoidable when a rectangle covers a sphere."),
+        "It does, for the latitude-longitude (spherical) mapping: the longitude is undefined at "
+        "the pole, so the whole top row meets there. That is a property of this mapping, not of "
+        "every way to put an image on a sphere: cube maps and octahedral maps have no such "
+        "point (they have seams between their faces instead)."),
     _tf(14, "ch14-bump-silhouette",
         "Bump mapping changes the silhouette of an object.", False,
         "It does not: it perturbs only the normals used in lighting; the geometry and thus the "
@@ -1079,7 +1085,9 @@ _ALL += [
         "The mirror direction of the incoming direction $\\vec d$ at a surface with unit normal "
         "$\\hat n$ is:",
         ("$\\vec d + 2(\\vec d \\cdot \\hat n)\\hat n$", "The sign is wrong: this keeps the "
-         "normal component and flips the tangential one."),
+         "tangential component and triples the normal one ($(\\vec d \\cdot \\hat n)\\hat n$ "
+         "becomes $3(\\vec d \\cdot \\hat n)\\hat n$), so the length changes too (unless "
+         "$\\vec d$ runs along the surface)."),
         ("$\\vec d - (\\vec d \\cdot \\hat n)\\hat n$", "That removes the normal component: "
          "a projection onto the surface, not a reflection."),
         ("$\\hat n - \\vec d$", "Not a reflection; its length is not even kept."),
@@ -1089,8 +1097,9 @@ _ALL += [
     _tf(15, "ch15-sphere-quadratic",
         "Intersecting a ray $o + t\\vec d$ with a sphere leads to a quadratic equation in $t$; "
         "a negative discriminant means the ray misses.", True,
-        "Substituting the ray into $\\|p - c\\|^2 = r^2$ gives $at^2 + bt + c = 0$; the nearest "
-        "hit is the smallest positive root.",
+        "Substituting the ray into $\\|p - C\\|^2 = r^2$ (centre $C$, radius $r$) gives "
+        "$at^2 + bt + c = 0$ with $a = \\vec d \\cdot \\vec d$, $b = 2\\,\\vec d \\cdot (o - C)$, "
+        "$c = \\|o - C\\|^2 - r^2$; the nearest hit is the smallest positive root.",
         "It is so: no real root, no intersection."),
     _mc(15, "ch15-acceleration",
         "What does a bounding volume hierarchy (BVH) change in ray tracing?",
