@@ -245,8 +245,8 @@ def setup_axes_2d(ax, limits, title=None, grid=True):
         ax.set_title(title)
     if grid:
         ax.grid(True, color="0.9", zorder=0)
-    ax.axhline(0, color="0.6", lw=0.8, zorder=1)
-    ax.axvline(0, color="0.6", lw=0.8, zorder=1)
+    ax.axhline(0, color="0.6", lw=0.8, zorder=1.6)      # above the grid (zorder 1.5)
+    ax.axvline(0, color="0.6", lw=0.8, zorder=1.6)
 
 
 def setup_axes_3d(ax, radius=1.5, title=None, elev=22, azim=-60, box=True):
@@ -471,7 +471,9 @@ class Blitter:
     fig : matplotlib.figure.Figure
     artists : list of Artist
         The artists that move. They are drawn after (on top of) the static ones; 3D polygon
-        collections among them are ordered far to near, as ``Axes3D`` does.
+        collections among them are ordered far to near, as ``Axes3D`` does. Still artists
+        above a moving one in a 2D axes (outlines and labels over an image) are redrawn with
+        them (``overlays``), so the live frame layers everything as the stored picture does.
 
     Examples
     --------
@@ -486,10 +488,12 @@ class Blitter:
     def __init__(self, fig, artists):
         self.fig = fig
         self.artists = list(artists)
+        self.overlays = []
         self.background = None
         self._saving = False
         for artist in self.artists:
             artist.set_animated(True)
+        self._promote_overlays()
         self._cid = fig.canvas.mpl_connect("draw_event", self._on_draw)
 
     def _on_draw(self, event):
@@ -501,9 +505,30 @@ class Blitter:
             self.background = canvas.copy_from_bbox(self.fig.bbox)
             self._draw_artists()
 
+    def _promote_overlays(self):
+        """Treat as moving the still artists of 2D axes that lie above a moving one (a higher
+        zorder: outlines and labels over an image). A full draw paints them after it; left in
+        the background, the blitted moving artist would cover them. Artists since removed
+        from their axes are dropped."""
+        self.overlays = [a for a in self.overlays if a.axes is not None]
+        known = {id(a) for a in self.artists + self.overlays}
+        for ax in dict.fromkeys(a.axes for a in self.artists if a.axes is not None):
+            if ax.name == "3d":
+                continue
+            low = min(a.get_zorder() for a in self.artists if a.axes is ax)
+            for child in (*ax.images, *ax.collections, *ax.lines, *ax.patches, *ax.texts):
+                if id(child) not in known and child.get_zorder() > low:
+                    child.set_animated(True)
+                    self.overlays.append(child)
+
     def _draw_artists(self):
-        polys = [a for a in self.artists if hasattr(a, "do_3d_projection")]
-        others = [a for a in self.artists if not hasattr(a, "do_3d_projection")]
+        moving = self.artists + [a for a in self.overlays if a.axes is not None]
+        polys = [a for a in moving if hasattr(a, "do_3d_projection")]
+        others = [a for a in moving if not hasattr(a, "do_3d_projection")]
+        # as a full draw paints them: by zorder, then in the order they were added to the axes
+        place = {id(c): k for ax in dict.fromkeys(a.axes for a in others)
+                 for k, c in enumerate(ax.get_children())}
+        others.sort(key=lambda a: (a.get_zorder(), place.get(id(a), 0)))
         depth = {id(a): a.do_3d_projection() for a in polys}
         for artist in sorted(polys, key=lambda a: depth[id(a)], reverse=True) + others:
             artist.axes.draw_artist(artist)
@@ -512,6 +537,7 @@ class Blitter:
         """Show the artists' new state: blit if a background is ready, else a full redraw."""
         canvas = self.fig.canvas
         if self.background is None:
+            self._promote_overlays()
             canvas.draw_idle()
             return
         canvas.restore_region(self.background)
@@ -521,17 +547,19 @@ class Blitter:
     def forget_background(self):
         """After a change to a static artist: the next update redraws the whole figure."""
         self.background = None
+        self._promote_overlays()
 
     def savefig(self, *args, **kwargs):
         """``fig.savefig`` with the moving artists included (animated artists are skipped
         by a plain savefig)."""
         self._saving = True
-        for artist in self.artists:
+        drawn = self.artists + self.overlays
+        for artist in drawn:
             artist.set_animated(False)
         try:
             self.fig.savefig(*args, **kwargs)
         finally:
-            for artist in self.artists:
+            for artist in drawn:
                 artist.set_animated(True)
             self._saving = False
 

@@ -132,6 +132,7 @@ class ZBufferExplorer(Explorer):
     def __init__(self, state=None):
         import ipywidgets as w
         import matplotlib
+        from matplotlib.collections import LineCollection
 
         self.state = state or State()
         s = scene(self.state)
@@ -152,9 +153,10 @@ class ZBufferExplorer(Explorer):
         self.marks = []
         for ax, title in ((ids_ax, "id buffer: which triangle each pixel shows"),
                           (depth_ax, "depth buffer")):
-            ax.set_xticks(range(WIDTH + 1), minor=True)
-            ax.set_yticks(range(HEIGHT + 1), minor=True)
-            ax.grid(which="minor", color="0.8", lw=0.5)
+            # the pixel grid, over the buffers (an axis grid would lie under the images)
+            edges = [[(x, 0), (x, HEIGHT)] for x in range(WIDTH + 1)] + \
+                    [[(0, y), (WIDTH, y)] for y in range(HEIGHT + 1)]
+            ax.add_collection(LineCollection(edges, colors="0.8", linewidths=0.5, zorder=1.5))
             ax.tick_params(labelsize=7)
             ax.set_title(title, fontsize=10)
             for k, tri in enumerate(TRIANGLES):
