@@ -99,6 +99,7 @@ def test_lesson_runs_and_every_control_of_every_explorer_changes_its_picture(lab
             view = views.nth(k)
             view.scroll_into_view_if_needed()
             name = explorer["class"]
+            notebook.screenshot(f"{Path(path).stem}-{k}-{name}", view)
             expected = {(key, option): how for (cls, key, option), (how, _) in EXPECTED.items()
                         if cls == name}
             lines, wrong = drive(view, explorer["gestures"], MIN_CHANGED, expected)
