@@ -301,7 +301,7 @@ class CameraExplorer(Explorer):
 
     def _enable_projection_controls(self):
         used = self.PROJECTION_CONTROLS[self.state.projection]
-        for name in ("fov_deg", "half_size", "oblique_deg", "oblique_scale"):
+        for name in set().union(*self.PROJECTION_CONTROLS.values()):
             self.controls[name].disabled = name not in used
 
     def _on_change(self, change):

@@ -10,6 +10,7 @@ kernel (:meth:`course_lib.widgets._base.Explorer.mouse_gestures`).
 import re
 import time
 
+from .lab import drag_on_canvas
 from .pixels import changed_pixels
 
 # A control inside a view; toggle buttons of a ToggleButtons group are one control.
@@ -224,22 +225,12 @@ def operate(view, control):
 
 
 def perform(view, gesture, steps=10):
-    """Perform a mouse gesture (a drag, a view turn or a click) on the view's figure canvas."""
+    """Perform a mouse gesture (a drag, a view turn or a click) on the view's figure canvas; the
+    caller waits for the new picture."""
     canvas = view.locator(".jupyter-matplotlib-canvas-div canvas").last   # the top canvas
     canvas.scroll_into_view_if_needed()
-    box = canvas.bounding_box()
-    page = view.page
-    x0 = box["x"] + gesture["start"][0] * box["width"]
-    y0 = box["y"] + gesture["start"][1] * box["height"]
-    x1 = box["x"] + gesture["end"][0] * box["width"]
-    y1 = box["y"] + gesture["end"][1] * box["height"]
-    page.mouse.move(x0, y0)
-    page.mouse.down()
-    if gesture["kind"] != "click":
-        for k in range(1, steps + 1):
-            page.mouse.move(x0 + (x1 - x0) * k / steps, y0 + (y1 - y0) * k / steps)
-            time.sleep(0.04)
-    page.mouse.up()
+    drag_on_canvas(canvas, gesture["start"], gesture["end"],
+                   steps=0 if gesture["kind"] == "click" else steps, settle=0)
     return f"{gesture['kind']} {gesture['what']}"
 
 

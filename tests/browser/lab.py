@@ -263,8 +263,9 @@ def figure_canvas(view):
     return view.locator(".jupyter-matplotlib canvas").first
 
 
-def drag_on_canvas(canvas, start, end, steps=12):
-    """Drag with the mouse from `start` to `end`, given as fractions of the canvas (0..1, y down)."""
+def drag_on_canvas(canvas, start, end, steps=12, settle=1.5):
+    """Drag with the mouse from `start` to `end`, given as fractions of the canvas (0..1, y down),
+    then wait `settle` seconds (the round trip through the kernel). ``steps=0`` is a click."""
     box = canvas.bounding_box()
     page = canvas.page
     x0, y0 = box["x"] + start[0] * box["width"], box["y"] + start[1] * box["height"]
@@ -275,7 +276,7 @@ def drag_on_canvas(canvas, start, end, steps=12):
         page.mouse.move(x0 + (x1 - x0) * k / steps, y0 + (y1 - y0) * k / steps)
         time.sleep(0.03)
     page.mouse.up()
-    time.sleep(1.5)
+    time.sleep(settle)
 
 
 def data_to_canvas_fraction(x, y, xlim, ylim, left, right, bottom, top):
