@@ -34,8 +34,9 @@ import numpy as np
 
 from . import curves
 from ._validate import as_array, as_scalar, as_vector
-from .curves import (_bernstein_matrix, _integer, _knot_vector, _parameters,
-                     bspline_basis, bspline_basis_derivative)
+from .curves import bspline_basis, bspline_basis_derivative
+from .curves._common import _integer, _knot_vector, _parameters
+from .curves.bezier_curves import _bernstein_matrix
 
 __all__ = [
     "NurbsSurface",

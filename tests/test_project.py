@@ -17,19 +17,27 @@ import yaml
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOK_DIRS = ("notebooks", "solutions", "exercises")
 # Every module of course_lib is documented (found by walking the package, so a new module is
-# covered the day it is added); the algorithm layer is every top-level module except the drawing
-# layer, and must stay free of drawing libraries.
+# covered the day it is added), and so is every package that re-exports a public API (a chapter
+# package such as course_lib.visibility); the algorithm layer is every top-level module or package
+# except the drawing layer, and must stay free of drawing libraries.
+def _declares_api(name):
+    import importlib.util
+
+    return "__all__" in Path(importlib.util.find_spec(name).origin).read_text()
+
+
 def _all_modules():
     import pkgutil
 
     import course_lib
     return sorted(info.name for info in pkgutil.walk_packages(course_lib.__path__, "course_lib.")
-                  if not info.ispkg)
+                  if not info.ispkg or _declares_api(info.name))
 
 
 DRAWING_LAYER = {"course_lib.draw"}
 # a private module (leading underscore) is internal unless it declares a public API (__all__)
-INTERNAL_MODULES = {"course_lib.widgets._clip2d"}
+INTERNAL_MODULES = {"course_lib.widgets._clip2d"} | {
+    m for m in _all_modules() if m.rsplit(".", 1)[1].startswith("_") and not _declares_api(m)}
 DOCUMENTED_MODULES = tuple(m for m in _all_modules() if m not in INTERNAL_MODULES)
 ALGORITHM_MODULES = tuple(m for m in DOCUMENTED_MODULES
                           if m.count(".") == 1 and m not in DRAWING_LAYER) + (

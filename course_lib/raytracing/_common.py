@@ -1,0 +1,104 @@
+"""Shared input checks and constants of :mod:`course_lib.raytracing`."""
+
+import numpy as np
+
+from .._validate import as_array, as_points, as_scalar, broadcast_stacks
+
+
+DEFAULT_EPSILON = 1e-4
+
+
+# ---------------------------------------------------------------------------------------------
+# Input checks built on the shared helpers
+# ---------------------------------------------------------------------------------------------
+
+def _dot(a, b):
+    return np.einsum("...i,...i->...", a, b)
+
+
+def _where(index, lead):
+    """' (at index ...)' for a flat index into arrays of leading shape `lead`."""
+    if not lead:
+        return ""
+    return f" (at index {tuple(int(i) for i in np.unravel_index(index, lead))})"
+
+
+def _nonzero_vectors(v, name, lead):
+    zero = ~np.any(v != 0, axis=-1)
+    if zero.any():
+        raise ValueError(f"{name} must not contain the zero vector"
+                         f"{_where(int(np.argmax(zero.ravel())), lead)}: a ray needs a direction")
+
+
+def _rays(origins, directions):
+    """Origins and directions flattened to (p, 3), and the common leading shape."""
+    o = as_points(origins, "origins", dims=3)
+    d = as_points(directions, "directions", dims=3)
+    lead = broadcast_stacks(origins=(o, 1), directions=(d, 1))
+    o = np.ascontiguousarray(np.broadcast_to(o, lead + (3,)).reshape(-1, 3))
+    d = np.ascontiguousarray(np.broadcast_to(d, lead + (3,)).reshape(-1, 3))
+    _nonzero_vectors(d, "directions", lead)
+    return o, d, lead
+
+
+def _t_min(value):
+    t = as_scalar(value, "t_min")
+    if t < 0:
+        raise ValueError(f"t_min must be >= 0 (hits behind the ray's origin are never wanted), "
+                         f"got {t}")
+    return t
+
+
+def _t_max(value, t_min):
+    if np.isscalar(value) and np.isposinf(value):
+        return np.inf
+    t = as_scalar(value, "t_max")
+    if t < t_min:
+        raise ValueError(f"t_max must not be below t_min (got t_min = {t_min}, t_max = {t})")
+    return t
+
+
+def _positive(value, name, what="positive"):
+    v = as_scalar(value, name)
+    if v <= 0:
+        raise ValueError(f"{name} must be {what}, got {v}")
+    return v
+
+
+def _whole(value, name, minimum):
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be a whole number, got a bool")
+    v = as_scalar(value, name)
+    if v < minimum or v != int(v):
+        raise ValueError(f"{name} must be a whole number >= {minimum}, got {value!r}")
+    return int(v)
+
+
+def _indices(value, name):
+    """Refractive indices: positive numbers (arrays allowed)."""
+    eta = as_array(value, name)
+    if np.any(eta <= 0):
+        raise ValueError(f"{name} must be positive (a refractive index; 1 for vacuum or air, "
+                         f"about 1.5 for glass), got {float(eta[eta <= 0].flat[0]):g}")
+    return eta
+
+
+def _unit_vectors(value, name):
+    v = as_points(value, name, dims=3)
+    length = np.sqrt(_dot(v, v))
+    if np.any(length == 0):
+        raise ValueError(f"{name} must not contain the zero vector"
+                         f"{_where(int(np.argmin(length.ravel())), length.shape)}: it has no "
+                         "direction")
+    return v / length[..., None]
+
+
+def _rgb(value, name):
+    c = as_array(value, name)
+    if c.ndim == 0:
+        c = np.full(3, float(c))
+    if c.shape != (3,):
+        raise ValueError(f"{name} must be a number (grey) or an RGB triple, got shape {c.shape}")
+    if np.any(c < 0):
+        raise ValueError(f"{name} must not be negative, got {c.tolist()}")
+    return c

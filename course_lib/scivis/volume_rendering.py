@@ -1,0 +1,397 @@
+"""Chapter 18 (lesson section 4): direct volume rendering: ray casting, compositing, MIP."""
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .._validate import as_array, as_rotation_matrix, as_scalar, as_vector
+from ..colormaps import rgba_transfer, transfer_preset, TransferFunction
+from ._common import _choice, _grid, _positive, _spacing
+from .grids import _lerp_grid
+from .isosurfaces import CUBE_CORNERS
+
+__all__ = ["VolumeImage", "composite", "mip", "view_rotation", "volume_render"]
+
+
+# ---------------------------------------------------------------------------------------------
+# Volume rendering
+# ---------------------------------------------------------------------------------------------
+
+class VolumeImage(NamedTuple):
+    """The result of :func:`volume_render`.
+
+    Attributes
+    ----------
+    rgb : ndarray, shape (height, width, 3)
+        The picture composited over the background; row 0 at the bottom.
+    alpha : ndarray, shape (height, width)
+        Accumulated opacity A of each ray (0 where a ray misses the volume).
+    samples : int
+        Samples taken (trilinear interpolations and transfer-function look-ups).
+    samples_saved : int
+        Samples that early ray termination skipped.
+
+    Examples
+    --------
+    >>> img = volume_render(np.ones((4, 4, 4)), "ramp", early_termination=None)
+    >>> img.rgb.shape, img.samples, img.samples_saved
+    ((4, 4, 3), 112, 0)
+    """
+    rgb: np.ndarray
+    alpha: np.ndarray
+    samples: int
+    samples_saved: int
+
+
+def view_rotation(azimuth=0.0, elevation=0.0):
+    r"""The rotation of an orbiting view: turn by `azimuth` about y, then `elevation` about x.
+
+    :math:`R = R_x(\text{elevation})\, R_y(\text{azimuth})`, angles in radians; pass it as
+    ``rotation`` to :func:`volume_render` or :func:`mip`, which map a point p of the volume to
+    view coordinates :math:`q = R (p - \text{centre})`.
+
+    Examples
+    --------
+    >>> view_rotation(np.pi / 2).round(12) @ [0, 0, 1]       # the volume's z turns to view x
+    array([1., 0., 0.])
+    """
+    a, e = as_scalar(azimuth, "azimuth"), as_scalar(elevation, "elevation")
+    ry = np.array([[np.cos(a), 0, np.sin(a)], [0, 1, 0], [-np.sin(a), 0, np.cos(a)]])
+    rx = np.array([[1, 0, 0], [0, np.cos(e), -np.sin(e)], [0, np.sin(e), np.cos(e)]])
+    return rx @ ry
+
+
+class _Rays(NamedTuple):
+    shape: tuple          # (height, width)
+    hit: np.ndarray       # (p,) bool
+    origins: np.ndarray   # (p, 3) world points, outside the volume, in front of it
+    direction: np.ndarray  # (3,)
+    t_near: np.ndarray    # (p,)
+    length: np.ndarray    # (p,) path length inside the box (0 for a miss)
+
+
+def _cast_rays(shape, sp, org, rotation, image_size, extent):
+    """One orthographic ray per pixel, clipped to the box of the volume's samples."""
+    nz, ny, nx = shape
+    lo = org
+    hi = org + sp * np.array([nx - 1, ny - 1, nz - 1])
+    centre = 0.5 * (lo + hi)
+    if rotation is None:
+        rot = np.eye(3)
+    else:
+        rot = as_rotation_matrix(rotation, "rotation")
+        if rot.shape != (3, 3):
+            raise ValueError(f"rotation must be a single 3x3 rotation, got shape {rot.shape}")
+    radius = 0.5 * np.linalg.norm(hi - lo)
+    if isinstance(extent, str):
+        _choice(extent, "extent", ("fit", "sphere"))
+        if extent == "fit":
+            q = (lo + (hi - lo) * CUBE_CORNERS - centre) @ rot.T
+            umin, vmin = q[:, :2].min(axis=0)
+            umax, vmax = q[:, :2].max(axis=0)
+        else:
+            umin = vmin = -radius
+            umax = vmax = radius
+    else:
+        umin, umax, vmin, vmax = as_vector(extent, "extent", 4)
+        if not (umin < umax and vmin < vmax):
+            raise ValueError("extent must be (umin, umax, vmin, vmax) with umin < umax and "
+                             f"vmin < vmax, got {tuple(float(e) for e in extent)}")
+    if image_size is None:
+        pixel = sp.min()
+        size = (max(2, int(round((vmax - vmin) / pixel)) + 1),
+                max(2, int(round((umax - umin) / pixel)) + 1))
+    else:
+        size = as_vector(image_size, "image_size", 2)
+        if (size < 1).any() or (size != np.round(size)).any():
+            raise ValueError(f"image_size must be (height, width) in whole pixels >= 1, got "
+                             f"{tuple(image_size)}")
+        size = (int(size[0]), int(size[1]))
+    u, v = np.meshgrid(np.linspace(umin, umax, size[1]), np.linspace(vmin, vmax, size[0]))
+    depth = radius + sp.max()
+    origins = (centre + u.reshape(-1, 1) * rot[0] + v.reshape(-1, 1) * rot[1]
+               + depth * rot[2])
+    direction = np.where(np.abs(rot[2]) < 1e-14, 0.0, -rot[2])   # cos(pi/2) is 6e-17, not 0
+    # the box, grown by a rounding error, so that rays along its faces are not lost
+    slack = 1e-12 * max(radius, 1.0)
+    lo, hi = lo - slack, hi + slack
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t1 = (lo - origins) / direction
+        t2 = (hi - origins) / direction
+    parallel = direction == 0                         # rays parallel to a pair of faces
+    between = (origins >= lo) & (origins <= hi)
+    t_lo = np.where(parallel, np.where(between, -np.inf, np.inf), np.minimum(t1, t2))
+    t_hi = np.where(parallel, np.where(between, np.inf, -np.inf), np.maximum(t1, t2))
+    t_near, t_far = t_lo.max(axis=1), t_hi.min(axis=1)
+    hit = t_far >= t_near
+    length = np.where(hit, t_far - t_near, 0.0)
+    return _Rays(size, hit, origins, direction, np.where(hit, t_near, 0.0), length)
+
+
+def _rgba_transfer(transfer, v):
+    """A 4-channel TransferFunction, from a preset name, a (color, opacity) pair or itself."""
+    lo, hi = float(v.min()), float(v.max())
+    in_range = (lo, hi) if hi > lo else (lo, lo + 1.0)
+    if isinstance(transfer, str):
+        return transfer_preset(transfer, in_range)
+    if isinstance(transfer, tuple) and len(transfer) == 2:
+        return rgba_transfer(transfer[0], transfer[1], in_range=in_range)
+    if not isinstance(transfer, TransferFunction) or transfer.channels != 4:
+        raise TypeError("transfer must be a preset name ('ramp', 'skin', 'bone'), a (color, "
+                        "opacity) pair of transfer functions, or a 4-channel (RGBA) "
+                        "TransferFunction")
+    values = transfer.values
+    if ((values < 0) | (values > 1)).any():
+        raise ValueError("transfer must give colours and opacities in [0, 1] (opacity 0 "
+                         "transparent, 1 opaque); its control values leave that range")
+    return transfer
+
+
+def _march_setup(volume, spacing, origin, rotation, image_size, extent, step):
+    v = _grid(volume, "volume", 3)
+    sp = _spacing(spacing, 3)
+    org = as_vector(origin, "origin", 3)
+    h = 0.5 * sp.min() if step is None else _positive(step, "step")
+    rays = _cast_rays(v.shape, sp, org, rotation, image_size, extent)
+    # samples at t_near + k h, k = 0 .. floor(L / h): both ends of the path are sampled
+    n = np.where(rays.hit, np.floor(rays.length / h + 1e-9).astype(np.intp) + 1, 0)
+    return v, sp, org, h, rays, n
+
+
+def volume_render(volume, transfer="ramp", rotation=None, image_size=None, step=None,
+                  spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0), extent="fit",
+                  early_termination=0.99, background=(0.0, 0.0, 0.0), unit_length=None):
+    r"""Direct volume rendering by ray casting, composited front to back.
+
+    One orthographic ray per pixel, travelling along :math:`-z` of the view frame
+    (:math:`q = R (p - \text{centre})`). Along each ray inside the volume's box, samples are
+    taken at :math:`t_k = t_{near} + k h` (both ends included), each standing for the segment
+    :math:`\Delta_k = \min(h, L - k h)` behind it (:math:`L` = path length). A sample's value
+    (trilinear, :func:`interpolate`) gives colour :math:`c` and opacity :math:`\alpha` through
+    the transfer function, corrected for the segment length,
+    :math:`\alpha_k = 1 - (1 - \alpha)^{\Delta_k / \ell}` (:math:`\ell` = `unit_length`), and
+    composited front to back:
+
+    .. math:: C \leftarrow C + (1 - A)\,\alpha_k c_k, \qquad A \leftarrow A + (1 - A)\,\alpha_k .
+
+    A ray stops when :math:`A \ge` `early_termination` (early ray termination): the samples
+    behind could change its colour by less than :math:`1 - A`. The pixel is finally
+    :math:`C + (1 - A)\,\text{background}`.
+
+    Parameters
+    ----------
+    volume : array_like, shape (nz, ny, nx)
+        Samples, last axis x (see the module's conventions).
+    transfer : str, (color, opacity) or TransferFunction
+        A preset name ("ramp", "skin", "bone"; :func:`course_lib.colormaps.transfer_preset`)
+        stretched over the volume's value range; a pair (colour transfer function or colour map
+        name, opacity transfer function) joined by :func:`course_lib.colormaps.rgba_transfer`
+        with a colour map spread over the value range; or a 4-channel RGBA TransferFunction of
+        the raw values. Opacities are per `unit_length` and must lie in [0, 1].
+    rotation : array_like, shape (3, 3), optional
+        The view rotation R (e.g. :func:`view_rotation`); default: look down -z of the volume.
+    image_size : (int, int), optional
+        (height, width). Default: one pixel per sample spacing over the extent (for the default
+        view, exactly one ray through each column ``volume[:, j, i]``).
+    step : float, optional
+        Distance h between samples along a ray, > 0; default half the smallest spacing.
+    spacing, origin : tuple of float
+        The volume's geometry (x, y, z).
+    extent : "fit", "sphere" or (umin, umax, vmin, vmax)
+        The image window in view coordinates: pixel centres run from umin to umax (columns) and
+        vmin to vmax (rows). "fit" hugs the volume's projected box; "sphere" is the square
+        around its bounding sphere, the same for every rotation (use it when turning the view).
+    early_termination : float in (0, 1] or None
+        The opacity at which a ray stops; None never stops early.
+    background : (r, g, b)
+        Colour behind the volume.
+    unit_length : float, optional
+        The thickness for which the transfer function's opacity holds; default the smallest
+        spacing (one voxel).
+
+    Returns
+    -------
+    VolumeImage
+        ``rgb`` (height, width, 3), ``alpha`` (height, width), and the sample counts.
+
+    Raises
+    ------
+    ValueError
+        For a non-3D volume or NaN in it, a non-positive step, spacing or unit length, an
+        opacity outside [0, 1], or an early termination threshold outside (0, 1].
+
+    Examples
+    --------
+    A uniform block 4 samples deep (path length 3) with opacity 0.5 per unit length: the
+    transmittance is :math:`(1 - 0.5)^3`, whatever the step (Beer-Lambert):
+
+    >>> tf = TransferFunction([0, 1], [[1, 1, 1, 0.5], [1, 1, 1, 0.5]])
+    >>> for h in (1.0, 0.5, 0.1):
+    ...     img = volume_render(np.ones((4, 4, 4)), tf, step=h, early_termination=None)
+    ...     print(round(1 - float(img.alpha[0, 0]), 12))
+    0.125
+    0.125
+    0.125
+    """
+    v, sp, org, h, rays, n = _march_setup(volume, spacing, origin, rotation, image_size, extent,
+                                          step)
+    tf = _rgba_transfer(transfer, v)
+    unit = sp.min() if unit_length is None else _positive(unit_length, "unit_length")
+    if early_termination is None:
+        threshold = None
+    else:
+        threshold = as_scalar(early_termination, "early_termination")
+        if not 0 < threshold <= 1:
+            raise ValueError(f"early_termination must lie in (0, 1] (or be None), got "
+                             f"{threshold:g}")
+    bg = as_vector(background, "background", 3)
+    flat, dims = v.ravel(), v.shape[::-1]
+    pixels = len(rays.hit)
+    out_c, out_a = np.zeros((pixels, 3)), np.zeros(pixels)
+    ids = np.flatnonzero(rays.hit)
+    # each ray in index coordinates: its first sample, and the move of one step
+    start = ((rays.origins[ids] + rays.t_near[ids, None] * rays.direction) - org) / sp
+    move = h * rays.direction / sp
+    length, count = rays.length[ids], n[ids]
+    color, alpha = np.zeros((len(ids), 3)), np.zeros(len(ids))
+    taken = saved = 0
+    k = 0
+    while len(ids):
+        q = start + k * move
+        rgba = tf._evaluate(_lerp_grid(flat, dims, [q[:, 0], q[:, 1], q[:, 2]]), "right")
+        segment = np.clip(length - k * h, 0.0, h)
+        a = 1.0 - (1.0 - rgba[:, 3]) ** (segment / unit)          # opacity correction
+        weight = (1.0 - alpha) * a
+        color += weight[:, None] * rgba[:, :3]
+        alpha += weight
+        taken += len(ids)
+        done = count <= k + 1
+        if threshold is not None:
+            early = (alpha >= threshold) & ~done
+            saved += int((count[early] - (k + 1)).sum())
+            done |= early
+        if done.any():
+            out_c[ids[done]], out_a[ids[done]] = color[done], alpha[done]
+            keep = ~done
+            ids, start, length, count, color, alpha = (
+                ids[keep], start[keep], length[keep], count[keep], color[keep], alpha[keep])
+        k += 1
+    rgb = out_c + (1.0 - out_a)[:, None] * bg
+    height, width = rays.shape
+    return VolumeImage(rgb.reshape(height, width, 3), out_a.reshape(height, width), taken, saved)
+
+
+def mip(volume, rotation=None, image_size=None, step=None, spacing=(1.0, 1.0, 1.0),
+        origin=(0.0, 0.0, 0.0), extent="fit", fill=None):
+    """Maximum intensity projection: the largest (trilinear) sample along each ray.
+
+    Rays, samples and parameters as in :func:`volume_render` (samples at both ends of each
+    path, every `step`). With the default view and a step that divides the z spacing, the
+    samples include every grid point of a column, so the result is ``volume.max(axis=0)``.
+
+    Parameters
+    ----------
+    fill : float, optional
+        The value of pixels whose ray misses the volume; default the volume's minimum.
+
+    Returns
+    -------
+    ndarray, shape (height, width)
+        Row 0 at the bottom.
+
+    Examples
+    --------
+    >>> vol = np.zeros((3, 2, 2)); vol[1, 0, 1] = 5.0; vol[2, 1, 1] = 2.0
+    >>> mip(vol)
+    array([[0., 5.],
+           [0., 2.]])
+    """
+    v, sp, org, h, rays, n = _march_setup(volume, spacing, origin, rotation, image_size, extent,
+                                          step)
+    background = float(v.min()) if fill is None else as_scalar(fill, "fill")
+    flat, dims = v.ravel(), v.shape[::-1]
+    out = np.full(len(rays.hit), background)
+    ids = np.flatnonzero(rays.hit)
+    start = ((rays.origins[ids] + rays.t_near[ids, None] * rays.direction) - org) / sp
+    move = h * rays.direction / sp
+    count = n[ids]
+    best = np.full(len(ids), -np.inf)
+    k = 0
+    while len(ids):
+        q = start + k * move
+        best = np.maximum(best, _lerp_grid(flat, dims, [q[:, 0], q[:, 1], q[:, 2]]))
+        done = count <= k + 1
+        if done.any():
+            out[ids[done]] = best[done]
+            keep = ~done
+            ids, start, count, best = ids[keep], start[keep], count[keep], best[keep]
+        k += 1
+    return out.reshape(rays.shape)
+
+
+def composite(colors, opacities, order="front-to-back", cumulative=False):
+    r"""Composite samples along a ray, given front (index 0, nearest the eye) to back.
+
+    Front to back: :math:`C \leftarrow C + (1 - A)\,\alpha_i c_i`,
+    :math:`A \leftarrow A + (1 - A)\,\alpha_i`, for i = 0, 1, ...; back to front (the
+    painter's "over" operator): :math:`C \leftarrow \alpha_i c_i + (1 - \alpha_i)\,C`,
+    :math:`A \leftarrow \alpha_i + (1 - \alpha_i)\,A`, for i = n-1, ..., 0. Both give the same
+    result; only front to back knows the opacity so far and can stop early. The colour is
+    premultiplied (as seen over black); over a background b the pixel is
+    :math:`C + (1 - A)\,b`.
+
+    Parameters
+    ----------
+    colors : array_like, shape (..., n, 3) or (..., n)
+        Sample colours (or grey levels).
+    opacities : array_like, shape (..., n)
+        Sample opacities in [0, 1].
+    order : {"front-to-back", "back-to-front"}
+    cumulative : bool
+        If True, return the running values after each sample (in the order processed, indexed
+        by sample): shapes (..., n, 3) / (..., n).
+
+    Returns
+    -------
+    color : ndarray, shape (..., 3) or (...)
+    alpha : ndarray, shape (...)
+
+    Examples
+    --------
+    A red sample of opacity 0.5 in front of a blue one of opacity 0.5:
+
+    >>> composite([[1, 0, 0], [0, 0, 1]], [0.5, 0.5])
+    (array([0.5 , 0.  , 0.25]), 0.75)
+    >>> composite([[1, 0, 0], [0, 0, 1]], [0.5, 0.5], order="back-to-front")
+    (array([0.5 , 0.  , 0.25]), 0.75)
+    """
+    _choice(order, "order", ("front-to-back", "back-to-front"))
+    a = as_array(opacities, "opacities")
+    c = as_array(colors, "colors")
+    if a.ndim == 0:
+        raise ValueError("opacities must have one value per sample, shape (..., n)")
+    grey = c.shape == a.shape
+    if not grey and c.shape != a.shape + (3,):
+        raise ValueError(f"colors must have shape opacities.shape + (3,) = {a.shape + (3,)} "
+                         f"or opacities.shape = {a.shape}, got {c.shape}")
+    if ((a < 0) | (a > 1)).any():
+        raise ValueError("opacities must lie in [0, 1] (0 transparent, 1 opaque), got values "
+                         f"from {a.min():g} to {a.max():g}")
+    cc = c[..., None] if grey else c
+    n = a.shape[-1]
+    color, alpha = np.zeros(cc.shape[:-2] + cc.shape[-1:]), np.zeros(a.shape[:-1])
+    steps_c, steps_a = np.zeros(cc.shape), np.zeros(a.shape)
+    indices = range(n) if order == "front-to-back" else range(n - 1, -1, -1)
+    for i in indices:
+        ai, ci = a[..., i], cc[..., i, :]
+        if order == "front-to-back":
+            color = color + ((1 - alpha) * ai)[..., None] * ci
+            alpha = alpha + (1 - alpha) * ai
+        else:
+            color = ai[..., None] * ci + (1 - ai)[..., None] * color
+            alpha = ai + (1 - ai) * alpha
+        steps_c[..., i, :], steps_a[..., i] = color, alpha
+    if cumulative:
+        return (steps_c[..., 0] if grey else steps_c), steps_a
+    color = color[..., 0] if grey else color
+    return color, (alpha if alpha.ndim else float(alpha))

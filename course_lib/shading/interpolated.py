@@ -1,0 +1,342 @@
+"""Chapter 12 (lesson section 4): vertex normals and flat, Gouraud and Phong shading of meshes."""
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .. import visibility
+from .._validate import as_matrix, as_points, as_scalar, as_vector
+from ._common import _dot, _rgb
+from .illumination import blinn_phong, _lights, phong
+from .materials import Material
+
+__all__ = ["ShadedImage", "face_normals", "render_shaded", "uv_sphere", "vertex_normals"]
+
+
+# ---------------------------------------------------------------------------------------------
+# Meshes: normals and interpolated shading
+# ---------------------------------------------------------------------------------------------
+
+def _mesh(vertices, faces):
+    v = as_points(vertices, "vertices", dims=3)
+    if v.ndim != 2 or len(v) == 0:
+        raise ValueError(f"vertices must be an (n, 3) array with n >= 1, got shape {v.shape}")
+    f = np.asarray(faces)
+    if f.ndim != 2 or f.shape[1] != 3 or not np.issubdtype(f.dtype, np.integer) or len(f) == 0:
+        raise ValueError(f"faces must be a non-empty (m, 3) array of vertex indices, got shape "
+                         f"{f.shape} and type {f.dtype}")
+    if f.min() < 0 or f.max() >= len(v):
+        raise ValueError(f"faces refers to vertex {int(f.max() if f.max() >= len(v) else f.min())}"
+                         f" but there are {len(v)} vertices")
+    return v, f.astype(np.intp)
+
+
+def _face_cross(v, f):
+    return np.cross(v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]])
+
+
+def face_normals(vertices, faces):
+    r"""Unit normals of the triangles, :math:`N = \frac{(v_1 - v_0) \times (v_2 - v_0)}
+    {\lVert (v_1 - v_0) \times (v_2 - v_0) \rVert}`.
+
+    They point to the side from which the vertices appear counter-clockwise. A degenerate
+    (zero-area) triangle gets the zero vector.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+    faces : array_like of int, shape (m, 3)
+
+    Returns
+    -------
+    ndarray, shape (m, 3)
+
+    Raises
+    ------
+    ValueError
+        For malformed vertices or faces.
+
+    Examples
+    --------
+    >>> face_normals([[0, 0, 0], [2, 0, 0], [0, 3, 0]], [[0, 1, 2], [0, 2, 1]])
+    array([[ 0.,  0.,  1.],
+           [ 0.,  0., -1.]])
+    """
+    v, f = _mesh(vertices, faces)
+    c = _face_cross(v, f)
+    length = np.sqrt(_dot(c, c))
+    return np.divide(c, length[:, None], out=np.zeros_like(c), where=length[:, None] > 0)
+
+
+def vertex_normals(vertices, faces):
+    r"""Vertex normals: the area-weighted average of the normals of the faces around a vertex.
+
+    .. math:: N_v = \frac{\sum_{f \ni v} A_f \hat N_f}{\lVert \sum_{f \ni v} A_f \hat N_f \rVert}
+              , \qquad A_f \hat N_f = \tfrac12 (v_1 - v_0) \times (v_2 - v_0)
+
+    so summing the raw cross products does the weighting (big faces count more, slivers
+    little). Used by Gouraud and Phong shading to make a faceted mesh look smooth. A vertex that
+    belongs to no face (or whose faces' normals cancel) gets the zero vector.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+    faces : array_like of int, shape (m, 3)
+
+    Returns
+    -------
+    ndarray, shape (n, 3)
+
+    Raises
+    ------
+    ValueError
+        For malformed vertices or faces.
+
+    Examples
+    --------
+    The apex of a square pyramid: the four sloped faces average to straight up:
+
+    >>> v = [[0, 0, 1], [1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0]]
+    >>> f = [[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 1]]
+    >>> vertex_normals(v, f)[0]
+    array([0., 0., 1.])
+    """
+    v, f = _mesh(vertices, faces)
+    c = _face_cross(v, f)
+    acc = np.zeros_like(v)
+    for k in range(3):
+        np.add.at(acc, f[:, k], c)
+    length = np.sqrt(_dot(acc, acc))
+    scale = 1e-12 * max(float(np.sqrt(_dot(c, c)).max()), 1e-300)
+    return np.divide(acc, length[:, None], out=np.zeros_like(acc),
+                     where=length[:, None] > scale)
+
+
+def uv_sphere(radius=1.0, segments=32, rings=16, center=(0.0, 0.0, 0.0)):
+    """A triangle mesh of a sphere by longitude (segments) and latitude (rings), poles on y.
+
+    The mesh to try the shading methods on: its vertices lie exactly on the sphere, so the
+    exact normal at a vertex is ``(vertex - center) / radius``.
+
+    Parameters
+    ----------
+    radius : float
+    segments : int
+        Divisions around the y axis (at least 3).
+    rings : int
+        Divisions from pole to pole (at least 2).
+    center : array_like, shape (3,)
+
+    Returns
+    -------
+    vertices : ndarray, shape (segments * (rings - 1) + 2, 3)
+    faces : ndarray of int, shape (2 * segments * (rings - 1), 3)
+        Counter-clockwise seen from outside.
+
+    Raises
+    ------
+    ValueError
+        For a non-positive radius or too few divisions.
+
+    Examples
+    --------
+    >>> v, f = uv_sphere(segments=8, rings=4)
+    >>> v.shape, f.shape, bool(np.allclose(np.linalg.norm(v, axis=1), 1))
+    ((26, 3), (48, 3), True)
+    """
+    r = as_scalar(radius, "radius")
+    if r <= 0:
+        raise ValueError(f"radius must be positive, got {r}")
+    if int(segments) != segments or segments < 3 or int(rings) != rings or rings < 2:
+        raise ValueError(f"segments must be a whole number >= 3 and rings >= 2, got {segments} "
+                         f"and {rings}")
+    segments, rings = int(segments), int(rings)
+    c = as_vector(center, "center", 3)
+    lat = np.pi / 2 - np.pi * np.arange(1, rings) / rings           # from the north pole down
+    lon = 2 * np.pi * np.arange(segments) / segments
+    x = np.cos(lat)[:, None] * np.sin(lon)[None]
+    z = np.cos(lat)[:, None] * np.cos(lon)[None]
+    y = np.broadcast_to(np.sin(lat)[:, None], x.shape)
+    body = np.stack([x, y, z], axis=-1).reshape(-1, 3)
+    vertices = np.vstack([[0.0, 1.0, 0.0], body, [0.0, -1.0, 0.0]]) * r + c
+    north, south = 0, len(vertices) - 1
+    i = np.arange(segments)
+    j = (i + 1) % segments
+    faces = [np.stack([np.full(segments, north), 1 + i, 1 + j], -1)]
+    for k in range(rings - 2):
+        a, b = 1 + k * segments + i, 1 + k * segments + j
+        a2, b2 = a + segments, b + segments
+        faces += [np.stack([a, a2, b2], -1), np.stack([a, b2, b], -1)]
+    last = 1 + (rings - 2) * segments
+    faces.append(np.stack([last + i, np.full(segments, south), last + j], -1))
+    return vertices, np.concatenate(faces).astype(np.intp)
+
+
+class ShadedImage(NamedTuple):
+    """The result of :func:`render_shaded`: buffers of shape (height, width), row 0 at the bottom.
+
+    Attributes
+    ----------
+    image : ndarray, shape (height, width, 3)
+        The shaded colour (unclamped), `background` where nothing is drawn.
+    ids : ndarray of int, shape (height, width)
+        The visible face, -1 for background.
+    depth : ndarray, shape (height, width)
+        Viewport depth in [0, 1], inf on background.
+
+    Examples
+    --------
+    >>> from course_lib.shading import directional_light
+    >>> from course_lib import viewing
+    >>> v, f = uv_sphere(segments=12, rings=6)
+    >>> V = viewing.look_at([0, 0, 4], [0, 0, -1], [0, 1, 0])
+    >>> P = viewing.perspective(np.radians(40), 1.0, 1.0, 10.0)
+    >>> img = render_shaded(v, f, V, P, 16, 16, directional_light([0, 0, 1]))
+    >>> img.image.shape, int((img.ids >= 0).sum()) > 50
+    ((16, 16, 3), True)
+    """
+    image: np.ndarray
+    ids: np.ndarray
+    depth: np.ndarray
+
+
+def _eye_and_view(view, projection):
+    """Eye position (None for a parallel projection) and the constant V of a parallel view."""
+    parallel = np.allclose(projection[3], [0.0, 0.0, 0.0, 1.0])
+    rot, t = view[:3, :3], view[:3, 3]
+    if parallel:
+        return None, rot[2] / np.linalg.norm(rot[2])        # z_e points towards the viewer
+    return -np.linalg.solve(rot, t), None
+
+
+def render_shaded(vertices, faces, view, projection, width, height, lights, material=Material(),
+                  shading="phong", model="phong", normals=None, ambient=1.0, background=0.0,
+                  cull_back_faces=False, two_sided=False):
+    r"""Render a triangle mesh with flat, Gouraud or Phong (per-pixel) shading.
+
+    The z-buffer of :func:`course_lib.visibility.render_depth` decides the visible face of each
+    pixel; the illumination model (:func:`phong` or :func:`blinn_phong`) gives the colour:
+
+    * ``shading="flat"``: once per face, at its centroid, with the face normal
+      (:func:`face_normals`); the whole face gets that colour.
+    * ``shading="gouraud"``: at every vertex with the vertex normal; the *colours* are
+      interpolated across each triangle (perspective-correctly, by the z-buffer).
+    * ``shading="phong"``: vertex positions and normals are interpolated to every pixel, the
+      normal renormalized (interpolation shortens it), and the model evaluated there.
+
+    The viewer: for a perspective `projection` the eye is the centre of projection of `view`
+    and :math:`V = (E - P)/\lVert E - P \rVert` per point; for a parallel projection (last row
+    ``(0, 0, 0, 1)``) :math:`V` is the camera's :math:`z_e` axis everywhere.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+    faces : array_like of int, shape (m, 3)
+        Counter-clockwise seen from outside (the face normals point outwards).
+    view, projection : array_like, shape (4, 4)
+        E.g. :func:`course_lib.viewing.look_at` and :func:`course_lib.viewing.perspective`.
+    width, height : int
+        Image size in pixels.
+    lights : Light or sequence of Light
+    material : Material, optional
+        One material for the whole mesh.
+    shading : {"flat", "gouraud", "phong"}
+    model : {"phong", "blinn"}
+        The illumination model.
+    normals : array_like, shape (n, 3), optional
+        Vertex normals (default :func:`vertex_normals`); for an analytic surface pass the exact
+        ones (a sphere's: ``(v - centre) / radius``). Not used by flat shading.
+    ambient : float or array_like, shape (3,)
+        Ambient light :math:`I_a`.
+    background : float or array_like, shape (3,)
+        Colour of the pixels where nothing is drawn.
+    cull_back_faces : bool
+    two_sided : bool
+        Light back faces too (their normals flipped towards the viewer).
+
+    Returns
+    -------
+    ShadedImage
+        Show with ``plt.imshow(np.clip(result.image, 0, 1), origin="lower")``.
+
+    Raises
+    ------
+    ValueError
+        For malformed input, an unknown `shading` or `model`, or a bad material or light.
+
+    Examples
+    --------
+    A flat-shaded sphere has one colour per face; Phong shading varies within faces:
+
+    >>> from course_lib.shading import directional_light
+    >>> from course_lib import viewing
+    >>> v, f = uv_sphere(segments=12, rings=6)
+    >>> V = viewing.look_at([0, 0, 4], [0, 0, -1], [0, 1, 0])
+    >>> P = viewing.perspective(np.radians(40), 1.0, 1.0, 10.0)
+    >>> light = directional_light([1, 1, 1])
+    >>> flat = render_shaded(v, f, V, P, 32, 32, light, shading="flat")
+    >>> smooth = render_shaded(v, f, V, P, 32, 32, light, shading="phong")
+    >>> def colours_per_face(result):
+    ...     seen = result.ids >= 0
+    ...     return max(len(np.unique(result.image[result.ids == i][:, 0]))
+    ...                for i in np.unique(result.ids[seen]))
+    >>> colours_per_face(flat), colours_per_face(smooth) > 5
+    (1, True)
+    """
+    if shading not in ("flat", "gouraud", "phong"):
+        raise ValueError(f"shading must be 'flat', 'gouraud' or 'phong', got {shading!r}")
+    if model not in ("phong", "blinn"):
+        raise ValueError(f"model must be 'phong' or 'blinn', got {model!r}")
+    illuminate = phong if model == "phong" else blinn_phong
+    v, f = _mesh(vertices, faces)
+    view = as_matrix(view, "view", 4)
+    projection = as_matrix(projection, "projection", 4)
+    bg = np.broadcast_to(_rgb(background, "background"), (3,))
+    lights = _lights(lights)
+    eye, v_const = _eye_and_view(view, projection)
+
+    def view_of(points):
+        if eye is None:
+            return np.broadcast_to(v_const, points.shape)
+        d = eye - points
+        return d / np.sqrt(_dot(d, d))[..., None]
+
+    def shade(points, nrm):
+        return illuminate(points, nrm, view_of(points), lights, material, ambient,
+                          two_sided=two_sided).total
+
+    if shading != "flat":
+        vn = vertex_normals(v, f) if normals is None else as_points(normals, "normals", dims=3)
+        if vn.shape != v.shape:
+            raise ValueError(f"normals must hold one normal per vertex, shape {v.shape}, got "
+                             f"{vn.shape}")
+    if shading == "flat":
+        zb = visibility.render_depth(v, f, view, projection, width, height,
+                                     cull_back_faces=cull_back_faces)
+        seen = np.unique(zb.ids[zb.ids >= 0])
+        colours = np.zeros((len(f), 3))
+        if len(seen):
+            colours[seen] = shade(v[f[seen]].mean(axis=1), face_normals(v, f[seen]))
+        image = colours[np.maximum(zb.ids, 0)]
+    elif shading == "gouraud":
+        used = np.sqrt(_dot(vn, vn)) > 0
+        colours = np.zeros((len(v), 3))
+        if used.any():
+            colours[used] = shade(v[used], vn[used])
+        zb = visibility.render_depth(v, f, view, projection, width, height, values=colours,
+                                     cull_back_faces=cull_back_faces)
+        image = zb.image
+    else:
+        zb = visibility.render_depth(v, f, view, projection, width, height,
+                                     values=np.hstack([v, vn]), cull_back_faces=cull_back_faces)
+        image = np.zeros((zb.ids.shape[0], zb.ids.shape[1], 3))
+        mask = zb.ids >= 0
+        if mask.any():
+            points, nrm = zb.image[mask][:, :3], zb.image[mask][:, 3:]
+            length = np.sqrt(_dot(nrm, nrm))
+            fallback = length < 1e-9                  # opposite normals cancelled: use the face's
+            if fallback.any():
+                nrm[fallback] = face_normals(v, f[zb.ids[mask][fallback]])
+            image[mask] = shade(points, nrm)
+    image = np.where((zb.ids >= 0)[..., None], image, bg)
+    return ShadedImage(image, zb.ids, zb.depth)
