@@ -33,7 +33,7 @@ import numpy as np
 from .. import format as fmt
 from .. import mesh
 from .core import (DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, close, data_note,
-                   diagnose_matrix, diagnose_parts, has_placeholder, hinted, parts_separated, pick,
+                   diagnose_matrix, diagnose_parts, has_placeholder, parts_separated, pick,
                    read_floats)
 
 __all__ = [
@@ -54,10 +54,6 @@ __all__ = [
 
 _num = fmt.number
 _vec = fmt.vector_latex
-
-#: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
-_GENERIC = {"components differ", "wrong length", "opposite sign", "entries differ", "scaled",
-            "sign", "transposed", "value differs"}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -133,19 +129,7 @@ def _small_mesh(rng, names):
     return (name, *_shuffled(rng, vertices, faces))
 
 
-class _Chapter6(DrawnExercise):
-    """The chapter's base: an answer the anticipated slips do not explain gets ``hint``."""
-
-    hint = ""
-
-    def _check(self, answer):
-        return hinted(self._judge(answer), self.hint, _GENERIC)
-
-    def _judge(self, answer):
-        return super()._check(answer)
-
-
-class _Parts(_Chapter6):
+class _Parts(DrawnExercise):
     """An answer of a few numbers, each with its own slips (``_parts()``), see diagnose_parts."""
 
     answer_form = "custom"
@@ -161,7 +145,7 @@ class _Parts(_Chapter6):
         return diagnose_parts(answer, self._parts(), "your answer", self.form_hint, self.hint)
 
 
-class _Record(_Chapter6):
+class _Record(DrawnExercise):
     """An answer that is a short tuple of whole numbers, matched whole against the slips.
 
     ``self.expected`` is a tuple; ``mistakes()`` returns ``(tuple, explanation, key)``
@@ -283,7 +267,7 @@ class EulerCounts(_Parts):
             + data_note("V", "genus", "k") + " (`.k` is the number of vertices per face.)")
 
 
-class GenusFromCounts(_Chapter6):
+class GenusFromCounts(DrawnExercise):
     r"""The genus of a connected orientable mesh from its counts and its boundary loops.
 
     :math:`V - E + F = 2 - 2g - b`, so :math:`g = \frac{2 - b - (V - E + F)}{2}`.
@@ -526,7 +510,7 @@ def _pairs_words(edges):
     return ", ".join(f"({a}, {b})" for a, b in edges)
 
 
-class Manifoldness(_Chapter6):
+class Manifoldness(DrawnExercise):
     r"""Decide whether a small face list is a closed manifold, has a boundary, or is non-manifold.
 
     A manifold mesh has one or two faces per edge and one fan of faces around each vertex;
@@ -633,7 +617,7 @@ class Manifoldness(_Chapter6):
             + data_note("faces", "menu"))
 
 
-class FlippedFace(_Chapter6):
+class FlippedFace(DrawnExercise):
     r"""Find the one face of a closed mesh whose vertices are listed the wrong way round.
 
     With consistent winding two faces sharing an edge walk it in opposite directions. The
@@ -1017,7 +1001,7 @@ def _quadric(planes):
     return sum(mesh.plane_quadric(p) for p in planes)
 
 
-class VertexQuadric(_Chapter6):
+class VertexQuadric(DrawnExercise):
     r"""The quadric :math:`Q = \sum_p p p^T` of a vertex from the planes of its faces.
 
     Each plane is first normalised to :math:`(a, b, c, d)` with unit normal and
@@ -1096,7 +1080,7 @@ def _matrix_latex(Q):
     return fmt.matrix_latex(np.round(Q, 10) + 0.0)
 
 
-class _TwoVertices(_Chapter6):
+class _TwoVertices(DrawnExercise):
     """An edge (v1, v2), each end with two planes through it; the quadrics Q1, Q2."""
 
     def _draw_edge(self, rng):

@@ -30,8 +30,8 @@ import numpy as np
 
 from .. import curves, surfaces
 from .. import format as fmt
-from .core import (ATOL, DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, close, data_note,
-                   diagnose_matrix, diagnose_parts, has_placeholder, hinted, is_unanswered,
+from .core import (DECIMALS, UNANSWERED, UNEXPLAINED, DrawnExercise, Feedback, Mistake, close,
+                   data_note, diagnose_matrix, diagnose_parts, has_placeholder, is_unanswered,
                    parts_separated, pick, read_names)
 
 __all__ = [
@@ -64,10 +64,6 @@ _num = fmt.number
 
 #: Parameter values that are pleasant by hand.
 _T_VALUES = (0.25, 1 / 3, 0.5, 2 / 3, 0.75)
-
-#: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
-_GENERIC = {"components differ", "wrong length", "opposite sign", "entries differ", "scaled",
-            "sign", "transposed", "value differs"}
 
 
 def _frac(x):
@@ -158,29 +154,13 @@ def _knots_words(knots):
 
 
 class _Chapter7(DrawnExercise):
-    """The chapter's base: an answer the anticipated slips do not explain gets ``hint``.
+    """The chapter's base: most answers are points or lists of values, not directions.
 
-    Core's vector diagnosis reads a wrong answer of the right direction as "right direction,
-    wrong length"; that means something for a tangent vector (``vector_like = True``) but
-    not for a point or a list of values, where it is replaced by the components that are off.
+    "Right direction, wrong length" means something for a tangent vector (``vector_like =
+    True``) but not for a point or a list of values (see ``DrawnExercise.vector_like``).
     """
 
-    hint = ""
     vector_like = False
-
-    def _check(self, answer):
-        return hinted(self._judge(answer), self.hint, _GENERIC)
-
-    def _judge(self, answer):
-        feedback = super()._check(answer)
-        if feedback.diagnosis == "wrong length" and not self.vector_like:
-            expected = np.ravel(self.expected)
-            value = np.ravel(_floats_or_none(answer))[:len(expected)]
-            off = [int(i) for i in np.flatnonzero(~np.isclose(value, expected, rtol=1e-3,
-                                                                atol=ATOL))]
-            feedback = Feedback("wrong", f"Components {off} (counted from 0) of {self.what} "
-                                "are off.", "components differ")
-        return feedback
 
 
 class _Points(_Chapter7):
@@ -409,7 +389,7 @@ class BernsteinValues(_Chapter7):
     def _judge(self, answer):
         fb = super()._judge(answer)
         value = _floats_or_none(answer)
-        if fb.status == "wrong" and fb.diagnosis in _GENERIC and value is not None:
+        if fb.status == "wrong" and fb.diagnosis in UNEXPLAINED and value is not None:
             total = float(np.sum(value))
             if abs(total - 1) > 1e-3:
                 return Feedback("wrong", f"{fb.message} Your values add up to "

@@ -30,9 +30,9 @@ import numpy as np
 
 from .. import format as fmt
 from .. import shading
-from .core import (DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, PartsAnswer,
-                   close, data_note, gap, hinted, is_unanswered, latex_fraction, latex_vector,
-                   pick, read_floats, well_separated)
+from .core import (DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, PartsAnswer, close,
+                   data_note, gap, is_unanswered, latex_fraction, latex_vector, pick, read_floats,
+                   well_separated)
 
 __all__ = [
     "EXERCISES",
@@ -53,9 +53,6 @@ __all__ = [
 _num = fmt.number
 _frac = latex_fraction
 _vec = latex_vector
-
-#: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
-_GENERIC = {"components differ", "wrong length", "opposite sign", "value differs"}
 
 #: Unit vectors with rational components, the last one "up" (along the normal).
 _UNIT_PATTERNS = ((0.0, 0.0, 1.0), (0.6, 0.0, 0.8), (0.8, 0.0, 0.6), (0.0, 0.6, 0.8),
@@ -139,19 +136,7 @@ def _material_words(**coefficients):
     return ", ".join(rf"${name} = {_num(value)}$" for name, value in coefficients.items())
 
 
-class _Chapter12(DrawnExercise):
-    """The chapter's base: an answer that no anticipated slip explains gets ``hint``."""
-
-    hint = ""
-
-    def _check(self, answer):
-        return hinted(self._judge(answer), self.hint, _GENERIC)
-
-    def _judge(self, answer):
-        return super()._check(answer)
-
-
-class _Parts(PartsAnswer, _Chapter12):
+class _Parts(PartsAnswer, DrawnExercise):
     """An answer made of several numbers, each with slips of its own (see PartsAnswer)."""
 
     def _judge(self, answer):
@@ -165,7 +150,7 @@ _ONE_NUMBER = "**Answer:** one number. " + DECIMALS
 # The vectors of the model
 # ---------------------------------------------------------------------------------------------
 
-class ReflectionVector(_Chapter12):
+class ReflectionVector(DrawnExercise):
     r"""The mirror direction :math:`R = 2 (\hat N \cdot L)\, \hat N - L` of a unit vector L.
 
     The normal is given with whole-number components and is not of unit length: it must be
@@ -249,7 +234,7 @@ def _matte(kd):
     return shading.Material(ka=0.0, kd=kd, ks=0.0, shininess=1.0)
 
 
-class DiffuseTerm(_Chapter12):
+class DiffuseTerm(DrawnExercise):
     r"""The diffuse term :math:`I_d = k_d I_l \max(N \cdot L, 0)` (Lambert's cosine law).
 
     Two kinds of variant: ``kind == "position"`` gives the surface point ``P``, its unit normal
@@ -368,7 +353,7 @@ def _rv(N, L, V):
     return float(R @ V)
 
 
-class SpecularTerm(_Chapter12):
+class SpecularTerm(DrawnExercise):
     r"""The specular term :math:`I_s = k_s I_l \max(R \cdot V, 0)^n` of the Phong model.
 
     Attributes: ``N``, ``L``, ``V`` (unit vectors), ``ks``, ``Il``, ``n`` (the exponent).
@@ -440,7 +425,7 @@ class SpecularTerm(_Chapter12):
             + data_note("N", "L", "V", "ks", "Il", "n"))
 
 
-class PhongTotal(_Chapter12):
+class PhongTotal(DrawnExercise):
     r"""The whole Phong intensity :math:`I = I_e + I_a k_a + k_d I_l \max(N \cdot L, 0)
     + k_s I_l \max(R \cdot V, 0)^n` for one grey light.
 
@@ -551,7 +536,7 @@ class PhongTotal(_Chapter12):
             + data_note("N", "L", "V", "Ie", "Ia", "ka", "kd", "ks", "n", "Il"))
 
 
-class BlinnPhongHighlight(_Chapter12):
+class BlinnPhongHighlight(DrawnExercise):
     r"""Blinn-Phong: the halfway vector :math:`H = (L + V)/\lVert L + V \rVert` and
     :math:`(N \cdot H)^n`.
 
@@ -664,7 +649,7 @@ class BlinnPhongHighlight(_Chapter12):
             + data_note("N", "L", "V", "n"))
 
 
-class DistanceAttenuation(_Chapter12):
+class DistanceAttenuation(DrawnExercise):
     r"""The light of a point light reaching a point: :math:`f_{att}(d)\, I_l`,
     :math:`f_{att}(d) = 1/(a + b d + c d^2)`.
 
@@ -729,7 +714,7 @@ class DistanceAttenuation(_Chapter12):
             + _ONE_NUMBER + "\n\n" + data_note("P", "Q", "Il", "a", "b", "c"))
 
 
-class SeveralLights(_Chapter12):
+class SeveralLights(DrawnExercise):
     r"""A matte surface lit by several distant lights: :math:`I = I_a k_a + k_d \sum_l I_l
     \max(N \cdot L_l, 0)`.
 
@@ -905,7 +890,7 @@ def _read_method(answer):
     return name
 
 
-class ShadingMethodChoice(_Chapter12):
+class ShadingMethodChoice(DrawnExercise):
     r"""Which interpolated shading method (flat, Gouraud, Phong) fits a situation.
 
     Every wrong choice is answered with why that method does not fit; the diagnosis is
@@ -1062,7 +1047,7 @@ class GouraudVersusPhong(_Parts):
 # Ambient occlusion
 # ---------------------------------------------------------------------------------------------
 
-class AmbientOcclusionSamples(_Chapter12):
+class AmbientOcclusionSamples(DrawnExercise):
     r"""Ambient occlusion estimated from cosine-weighted sample rays: the fraction unblocked.
 
     A ray is blocked when it hits something within the maximum distance :math:`D`. With
@@ -1146,7 +1131,7 @@ class AmbientOcclusionSamples(_Chapter12):
 _SIDES = ((3, 4), (4, 3), (5, 12), (12, 5), (6, 8), (8, 6), (1, 1), (2, 2), (8, 15), (15, 8))
 
 
-class AmbientOcclusionWall(_Chapter12):
+class AmbientOcclusionWall(DrawnExercise):
     r"""Closed-form ambient occlusion next to a wall, :math:`\tfrac12 (1 + a/\sqrt{a^2 + h^2})`,
     or in the middle of a trench, :math:`a/\sqrt{a^2 + h^2}`.
 

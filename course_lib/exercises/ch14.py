@@ -31,8 +31,8 @@ import numpy as np
 
 from .. import format as fmt
 from .. import texturing
-from .core import (ATOL, DECIMALS, DrawnExercise, Feedback, Mistake, PartsAnswer, data_note,
-                   hinted, latex_fraction, latex_vector, pick)
+from .core import (DECIMALS, DrawnExercise, Mistake, PartsAnswer, data_note, latex_fraction,
+                   latex_vector, pick)
 
 __all__ = [
     "EXERCISES",
@@ -53,9 +53,6 @@ _num = fmt.number
 _frac = functools.partial(latex_fraction, max_denominator=1024)
 _vec = functools.partial(latex_vector, max_denominator=1024)
 
-#: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
-_GENERIC = {"components differ", "wrong length", "opposite sign", "value differs"}
-
 #: Whole-number vectors of whole-number length: (x, y, z), |(x, y, z)|.
 _INTEGER_VECTORS = (((0, 3, 4), 5), ((3, 0, 4), 5), ((0, 4, 3), 5), ((4, 0, 3), 5),
                     ((1, 2, 2), 3), ((2, 1, 2), 3), ((2, 2, 1), 3), ((2, 3, 6), 7),
@@ -67,13 +64,6 @@ _INTEGER_VECTORS = (((0, 3, 4), 5), ((3, 0, 4), 5), ((0, 4, 3), 5), ((4, 0, 3), 
 # ---------------------------------------------------------------------------------------------
 # Helpers
 # ---------------------------------------------------------------------------------------------
-
-def _floats_or_none(answer):
-    try:
-        return np.asarray(answer, dtype=float)
-    except (TypeError, ValueError):
-        return None
-
 
 def _texture_table(T):
     """A texture as a Markdown table drawn like the picture: the top row (largest v) first."""
@@ -88,28 +78,10 @@ def _texture_table(T):
 
 
 class _Chapter14(DrawnExercise):
-    """The chapter's base: an answer that no anticipated slip explains gets ``hint``.
+    """The chapter's base: "right direction, wrong length" means nothing for texture
+    coordinates and lists of values (see ``DrawnExercise.vector_like``)."""
 
-    Core's vector diagnosis reads a wrong answer of the right direction as "right direction,
-    wrong length"; for texture coordinates and lists of values that means nothing, so it is
-    replaced by the components that are off.
-    """
-
-    hint = ""
-
-    def _check(self, answer):
-        return hinted(self._judge(answer), self.hint, _GENERIC)
-
-    def _judge(self, answer):
-        feedback = super()._check(answer)
-        if feedback.diagnosis == "wrong length":
-            expected = np.ravel(self.expected)
-            value = np.ravel(_floats_or_none(answer))
-            off = [int(i) for i in np.flatnonzero(~np.isclose(value, expected, rtol=1e-3,
-                                                                atol=ATOL))]
-            feedback = Feedback("wrong", f"Components {off} (counted from 0) of {self.what} "
-                                "are off.", "components differ")
-        return feedback
+    vector_like = False
 
 
 class _Parts(PartsAnswer, _Chapter14):

@@ -30,7 +30,7 @@ import numpy as np
 from .. import format as fmt
 from .. import scivis
 from .core import (APART, ATOL, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake,
-                   data_note, has_placeholder, hinted, pick, read_floats)
+                   data_note, has_placeholder, pick, read_floats)
 
 __all__ = [
     "CompositeFrontToBack",
@@ -49,32 +49,13 @@ __all__ = [
 _num = fmt.number
 _vec = fmt.vector_latex
 
-#: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
-_GENERIC = {"components differ", "wrong length", "opposite sign", "value differs",
-            "entries differ", "scaled", "sign", "transposed"}
-
 
 class _Chapter18(DrawnExercise):
-    """The chapter's base: an answer no anticipated slip explains gets ``hint``.
+    """The chapter's base: answers are points or pairs of numbers, not directions, and never
+    True/False (see ``DrawnExercise.vector_like`` and ``reject_bool``)."""
 
-    "Right direction, wrong length" means nothing for a point or a pair of numbers: it becomes
-    the list of the components that are off.
-    """
-
-    hint = ""
-
-    def _check(self, answer):
-        if isinstance(answer, (bool, np.bool_)):
-            return Feedback("invalid", "Your answer is True or False; give a number.",
-                            "not a number")
-        feedback = super()._check(answer)
-        if feedback.diagnosis == "wrong length":
-            value = np.ravel(read_floats(answer))[:np.size(self.expected)]
-            off = [int(i) for i in np.flatnonzero(~np.isclose(value, np.ravel(self.expected),
-                                                                rtol=1e-3, atol=ATOL))]
-            feedback = Feedback("wrong", f"Components {off} (counted from 0) of {self.what} "
-                                "are off.", "components differ")
-        return hinted(feedback, self.hint, _GENERIC)
+    vector_like = False
+    reject_bool = True
 
 
 # ---------------------------------------------------------------------------------------------

@@ -68,6 +68,11 @@ MAX_DRAWS = 500
 DECIMALS = "Give at least 3 decimals (or let numpy compute them)."
 #: What an unanswered exercise says.
 UNANSWERED = "Replace the `...` with your answer and run the cell again."
+#: The diagnoses that name no anticipated mistake (the generic ones of :func:`diagnose_matrix`,
+#: :func:`diagnose_vector`, :func:`diagnose_number` and :func:`diagnose_parts`): a wrong answer
+#: diagnosed so is followed by the exercise's ``hint`` (see :class:`DrawnExercise`).
+UNEXPLAINED = frozenset({"components differ", "wrong length", "opposite sign", "entries differ",
+                         "scaled", "sign", "transposed", "value differs"})
 
 
 class Feedback:
@@ -738,8 +743,10 @@ class DrawnExercise(Exercise):
 
     A subclass sets ``title`` and implements ``draw(rng)`` (set the question's attributes and
     ``self.expected``), ``mistakes()`` (the :class:`Mistake`\ s computed from the question) and
-    ``statement()``; optionally ``acceptable()``, and for a form of its own ``_check(answer)``.
-    ``check`` never raises: an answer the checker cannot handle is reported as unreadable.
+    ``statement()``; optionally ``acceptable()``, and for a form of its own ``_judge(answer)``
+    (the verdict, to which ``check`` adds the ``hint``) or ``_check(answer)`` (the whole
+    feedback, without the hint). ``check`` never raises: an answer the checker cannot handle is
+    reported as unreadable.
 
     Attributes
     ----------
@@ -759,6 +766,15 @@ class DrawnExercise(Exercise):
     projective_point : bool
         Point form: a homogeneous answer with ``w != 1`` is named as a forgotten homogeneous
         divide.
+    hint : str
+        How to get the answer right: it ends the feedback on a wrong answer that no anticipated
+        mistake explains (a diagnosis in ``UNEXPLAINED``). Empty: nothing is added.
+    vector_like : bool
+        Vector and point forms: whether "right direction, wrong length" means something (a
+        direction, a tangent). False for a point or a list of values: such an answer is told
+        which components are off instead.
+    reject_bool : bool
+        Whether ``True`` or ``False`` is refused as an answer instead of being read as 1 or 0.
 
     Examples
     --------
@@ -788,6 +804,9 @@ class DrawnExercise(Exercise):
     #: The answer is a transformation matrix (False: a table, a list of points...): chooses the
     #: wording of the generic diagnoses of :func:`diagnose_matrix`.
     transform = True
+    hint = ""
+    vector_like = True
+    reject_bool = False
 
     def setup(self, rng):
         """Draw variants from `rng` until one is acceptable with well-separated mistakes."""
@@ -847,6 +866,25 @@ class DrawnExercise(Exercise):
                             "the form the question asks for.", "unreadable")
 
     def _check(self, answer):
+        """The verdict of ``_judge``, with the ``hint`` when no anticipated mistake explains it."""
+        return hinted(self._judge(answer), self.hint, UNEXPLAINED)
+
+    def _judge(self, answer):
+        """The verdict on `answer` by its form (see ``answer_form``)."""
+        if self.reject_bool and isinstance(answer, (bool, np.bool_)):
+            return Feedback("invalid", "Your answer is True or False; give a number.",
+                            "not a number")
+        feedback = self._by_form(answer)
+        if feedback.diagnosis == "wrong length" and not self.vector_like:
+            expected = np.ravel(self.expected)
+            value = np.ravel(read_floats(answer))[:len(expected)]
+            off = [int(i) for i in np.flatnonzero(~np.isclose(value, expected, rtol=1e-3,
+                                                                atol=ATOL))]
+            feedback = Feedback("wrong", f"Components {off} (counted from 0) of {self.what} "
+                                "are off.", "components differ")
+        return feedback
+
+    def _by_form(self, answer):
         form, mistakes = self.answer_form, self._mistakes
         if form == "matrix":
             return diagnose_matrix(answer, self.expected, mistakes, what=self.what,
