@@ -93,15 +93,15 @@ def _names(indices):
 
 
 def _set_feedback(answer, expected, mistakes, n, what, hint, right):
-    """Judge a set of indices; `mistakes` are (set, explanation, key); `right` praises."""
+    """Judge a set of indices; `mistakes` are Mistakes with sets as values; `right` praises."""
     value = _read_index_set(answer, n, what)
     if isinstance(value, Feedback):
         return value
     if value == expected:
         return Feedback("correct", right)
-    for wrong, explanation, key in mistakes:
-        if value == wrong and wrong != expected:
-            return Feedback("wrong", explanation, key)
+    for mistake in mistakes:
+        if value == mistake.value and mistake.value != expected:
+            return Feedback("wrong", mistake.explanation, mistake.key)
     missing, extra = sorted(expected - value), sorted(value - expected)
     parts = []
     if extra:
@@ -168,18 +168,22 @@ def _clip_words(ex):
 class _Listed(DrawnExercise):
     """An exercise whose answer is a list, a set or a segment rather than an array.
 
-    Its ``mistakes()`` are ``(value, explanation, key)`` triples; those equal to the right
-    answer in this variant are dropped.
+    Its ``mistakes()`` are Mistakes with ``numeric=False`` (their values are sets, lists,
+    segments or ``"rejected"``); those equal to the right answer in this variant are dropped.
     """
 
     answer_form = "custom"
 
     def keep(self, mistakes):
-        return [m for m in mistakes if not _equal_answers(m[0], self.expected)]
+        return [m for m in mistakes if not _equal_answers(m.value, self.expected)]
 
 
 def _equal_answers(a, b):
-    """Whether two answers of a listed exercise are the same (sets, lists, segments, None)."""
+    """Whether two answers of a listed exercise are the same (sets, lists, segments, None).
+
+    A segment rejected as a whole is None, or the word ``"rejected"`` a student types.
+    """
+    a, b = (None if isinstance(x, str) else x for x in (a, b))
     if isinstance(a, np.ndarray) and isinstance(b, np.ndarray):
         return _same_segment(a, b)
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
@@ -241,15 +245,16 @@ class BackFaceCulling(_Listed):
     def mistakes(self):
         front = set(range(len(self.points))) - self.expected
         return [
-            (front, r"You kept the back faces and culled the front ones. With the view vector "
-             r"$v = P - E$ pointing **from the eye to the face**, a face turns its back when "
-             r"$n \cdot v \ge 0$ (the normal points away from the eye). The compendium's "
-             r"$v \cdot n < 0$ holds for a view vector pointing from the face to the eye.",
-             "compendium sign"),
-            (self._constant(), r"You used the same view vector (the gaze direction) for every "
-             r"face, which is right for a parallel projection only. In perspective the view "
-             r"vector runs from the eye to each face, $v_i = P_i - E$, and faces near the edge "
-             r"of the view can flip.", "constant view direction"),
+            Mistake(front, r"You kept the back faces and culled the front ones. With the view "
+                    r"vector $v = P - E$ pointing **from the eye to the face**, a face turns its "
+                    r"back when $n \cdot v \ge 0$ (the normal points away from the eye). The "
+                    r"compendium's $v \cdot n < 0$ holds for a view vector pointing from the face "
+                    r"to the eye.", "compendium sign", numeric=False),
+            Mistake(self._constant(), r"You used the same view vector (the gaze direction) for "
+                    r"every face, which is right for a parallel projection only. In perspective "
+                    r"the view vector runs from the eye to each face, $v_i = P_i - E$, and faces "
+                    r"near the edge of the view can flip.",
+                    "constant view direction", numeric=False),
         ]
 
     def separated(self, mistakes):
@@ -373,30 +378,31 @@ class Outcodes(_Listed):
     def mistakes(self):
         dim = self.dim
         found = [
-            ([_reverse_bits(c, dim) for c in self.expected], r"The bits are in the reverse "
-             r"order. Bit 0 (the **rightmost** bit, value 1) is left, then right (2), bottom "
-             r"(4), top (8)" + (r", near (16), far (32)" if dim == 3 else "") + r"; written as a "
-             rf"bit string the leftmost bit is {'far' if dim == 3 else 'top'}.",
-             "bit order reversed"),
-            ([_swap_sides(c) for c in self.expected], r"Left and right (and bottom and top"
-             + (", near and far" if dim == 3 else "") + r") are swapped: the lower bit of each "
-             r"pair is the **minimum** side, e.g. left = 1 for $x < x_{min}$, right = 2 for "
-             r"$x > x_{max}$.", "min and max swapped"),
+            Mistake([_reverse_bits(c, dim) for c in self.expected], r"The bits are in the "
+                    r"reverse order. Bit 0 (the **rightmost** bit, value 1) is left, then right "
+                    r"(2), bottom (4), top (8)" + (r", near (16), far (32)" if dim == 3 else "")
+                    + r"; written as a bit string the leftmost bit is "
+                    + rf"{'far' if dim == 3 else 'top'}.", "bit order reversed", numeric=False),
+            Mistake([_swap_sides(c) for c in self.expected], r"Left and right (and bottom and "
+                    r"top" + (", near and far" if dim == 3 else "") + r") are swapped: the lower "
+                    r"bit of each pair is the **minimum** side, e.g. left = 1 for $x < x_{min}$, "
+                    r"right = 2 for $x > x_{max}$.", "min and max swapped", numeric=False),
         ]
         boundary = self._on_boundary()
         if any(boundary):
-            found.append(([c | b for c, b in zip(self.expected, boundary)], r"A point on the "
-                          r"boundary is **inside**: a bit is set only for $x < x_{min}$, "
-                          r"$x > x_{max}$ and so on (strict inequalities).",
-                          "boundary counts as outside"))
+            found.append(Mistake([c | b for c, b in zip(self.expected, boundary)], r"A point on "
+                                 r"the boundary is **inside**: a bit is set only for "
+                                 r"$x < x_{min}$, $x > x_{max}$ and so on (strict inequalities).",
+                                 "boundary counts as outside", numeric=False))
         if dim == 3:
-            found.append(([c & 0b1111 for c in self.expected], r"The near and far bits are "
-                          r"missing: in 3D the outcode has 6 bits, near (16) for "
-                          r"$z < z_{min}$ and far (32) for $z > z_{max}$.", "z bits missing"))
-        return [m for m in found if m[0] != self.expected]
+            found.append(Mistake([c & 0b1111 for c in self.expected], r"The near and far bits are "
+                                 r"missing: in 3D the outcode has 6 bits, near (16) for "
+                                 r"$z < z_{min}$ and far (32) for $z > z_{max}$.",
+                                 "z bits missing", numeric=False))
+        return [m for m in found if m.value != self.expected]
 
     def separated(self, mistakes):
-        values = [tuple(m[0]) for m in mistakes]
+        values = [tuple(m.value) for m in mistakes]
         return len(set(values)) == len(values)
 
     def _check(self, answer):
@@ -405,9 +411,9 @@ class Outcodes(_Listed):
             return codes
         if codes == self.expected:
             return Feedback("correct", "All the outcodes are right.")
-        for wrong, explanation, key in self._mistakes:
-            if codes == wrong:
-                return Feedback("wrong", explanation, key)
+        for mistake in self._mistakes:
+            if codes == mistake.value:
+                return Feedback("wrong", mistake.explanation, mistake.key)
         off = [i for i, (a, b) in enumerate(zip(codes, self.expected)) if a != b]
         return Feedback("wrong", f"The outcodes of the points {off} (counted from 0) are off. "
                         "For each side compare one coordinate with the box: a bit is set when "
@@ -534,22 +540,24 @@ class CohenSutherlandDecision(_Listed):
         swapped = ["accept" if k != "reject" else "reject" for k in self._kinds]
         final = ["reject" if k == "trick" else self._decision(k) for k in self._kinds]
         return [
-            ([self._decision(k) if k != "half" else "clip" for k in both_outside],
-             r"Both end points outside does not mean the segment is outside: it can cross the "
-             r"rectangle. The trivial reject needs both end points beyond the **same** side, "
-             r"$c_0 \land c_1 \ne 0$; otherwise the segment must be clipped.",
-             "both endpoints outside"),
-            (swapped, r"The tests are swapped. Accept when **no** bit is set in either code, "
-             r"$c_0 \lor c_1 = 0$; reject when some bit is set in **both**, "
-             r"$c_0 \land c_1 \ne 0$; anything else needs clipping.", "and/or swapped"),
-            (final, r"You judged the segments by what is finally left of them. The first test "
-             r"only looks at the outcodes: a segment with $c_0 \land c_1 = 0$ goes to clipping "
-             r"even if it turns out to miss the rectangle (it is rejected later, after an "
-             r"intersection has been computed).", "final result instead of the test"),
+            Mistake([self._decision(k) if k != "half" else "clip" for k in both_outside], r"Both "
+                    r"end points outside does not mean the segment is outside: it can cross the "
+                    r"rectangle. The trivial reject needs both end points beyond the **same** "
+                    r"side, $c_0 \land c_1 \ne 0$; otherwise the segment must be clipped.",
+                    "both endpoints outside", numeric=False),
+            Mistake(swapped, r"The tests are swapped. Accept when **no** bit is set in either "
+                    r"code, $c_0 \lor c_1 = 0$; reject when some bit is set in **both**, "
+                    r"$c_0 \land c_1 \ne 0$; anything else needs clipping.",
+                    "and/or swapped", numeric=False),
+            Mistake(final, r"You judged the segments by what is finally left of them. The first "
+                    r"test only looks at the outcodes: a segment with $c_0 \land c_1 = 0$ goes to "
+                    r"clipping even if it turns out to miss the rectangle (it is rejected later, "
+                    r"after an intersection has been computed).",
+                    "final result instead of the test", numeric=False),
         ]
 
     def separated(self, mistakes):
-        values = [tuple(m[0]) for m in mistakes] + [tuple(self.expected)]
+        values = [tuple(m.value) for m in mistakes] + [tuple(self.expected)]
         return len(set(values)) == len(values)
 
     def _check(self, answer):
@@ -558,9 +566,9 @@ class CohenSutherlandDecision(_Listed):
             return words
         if words == self.expected:
             return Feedback("correct", "All five decisions are right.")
-        for wrong, explanation, key in self._mistakes:
-            if words == wrong:
-                return Feedback("wrong", explanation, key)
+        for mistake in self._mistakes:
+            if words == mistake.value:
+                return Feedback("wrong", mistake.explanation, mistake.key)
         off = [i for i, (a, b) in enumerate(zip(words, self.expected)) if a != b]
         return Feedback("wrong", f"The decisions for the segments {off} (counted from 0) are "
                         r"off. Compute both outcodes; accept if $c_0 \lor c_1 = 0$, reject if "
@@ -611,7 +619,7 @@ def _same_segment(a, b):
 
 
 def _segment_feedback(answer, expected, mistakes, dim, hint):
-    """Judge a clipped segment (either end first) or 'rejected'; mistakes: (value, text, key)."""
+    """Judge a clipped segment (either end first) or 'rejected'; mistakes: Mistakes of either."""
     value = _read_segment(answer, dim)
     if isinstance(value, Feedback):
         return value
@@ -619,12 +627,13 @@ def _segment_feedback(answer, expected, mistakes, dim, hint):
         return Feedback("correct", "Right: nothing of the segment is inside.")
     if not isinstance(value, str) and expected is not None and _same_segment(value, expected):
         return Feedback("correct", "The clipped segment is right.")
-    for wrong, explanation, key in mistakes:
+    for mistake in mistakes:
+        wrong = mistake.value
         if isinstance(wrong, str) or wrong is None:
             if isinstance(value, str) and expected is not None:
-                return Feedback("wrong", explanation, key)
+                return Feedback("wrong", mistake.explanation, mistake.key)
         elif not isinstance(value, str) and _same_segment(value, wrong):
-            return Feedback("wrong", explanation, key)
+            return Feedback("wrong", mistake.explanation, mistake.key)
     if isinstance(value, str):
         return Feedback("wrong", "Part of this segment is inside the clip region, so something "
                         "is left. " + hint, "rejected a visible segment")
@@ -689,20 +698,22 @@ class CohenSutherlandClip(_Listed):
     def mistakes(self):
         clamped = np.clip([self.p0, self.p1], self.box_min, self.box_max)
         return [
-            (self._one_clip_each(), r"One end point needs a second intersection: after the "
-             r"first cut its new outcode is still not 0 (it is beyond another side). Repeat the "
-             r"test with the new outcodes until the segment is accepted or rejected.",
-             "one clip per endpoint"),
-            (clamped, r"You moved each end point onto the rectangle coordinate by coordinate "
-             r"(clamping). That changes the segment's direction: the new end points must lie on "
-             r"the **segment**, at its intersection with a side's line, "
-             r"$y = y_0 + (x_{side} - x_0)\,\frac{y_1 - y_0}{x_1 - x_0}$.", "clamped"),
-            (np.array([self.p0, self.p1]), r"That is the segment you started with; part of it "
-             r"lies outside the rectangle and has to be cut off.", "not clipped"),
+            Mistake(self._one_clip_each(), r"One end point needs a second intersection: after the "
+                    r"first cut its new outcode is still not 0 (it is beyond another side). Repeat "
+                    r"the test with the new outcodes until the segment is accepted or rejected.",
+                    "one clip per endpoint", numeric=False),
+            Mistake(clamped, r"You moved each end point onto the rectangle coordinate by "
+                    r"coordinate (clamping). That changes the segment's direction: the new end "
+                    r"points must lie on the **segment**, at its intersection with a side's line, "
+                    r"$y = y_0 + (x_{side} - x_0)\,\frac{y_1 - y_0}{x_1 - x_0}$.",
+                    "clamped", numeric=False),
+            Mistake(np.array([self.p0, self.p1]), r"That is the segment you started with; part of "
+                    r"it lies outside the rectangle and has to be cut off.",
+                    "not clipped", numeric=False),
         ]
 
     def separated(self, mistakes):
-        values = [m[0] for m in mistakes] + [self.expected]
+        values = [m.value for m in mistakes] + [self.expected]
         return all(not _same_segment(a, b) for i, a in enumerate(values)
                    for b in values[i + 1:])
 
@@ -1052,8 +1063,9 @@ class LiangBarskyClip3D(_Listed):
         self._table = _lb_table(self.p0, self.p1, self.box_min, self.box_max)
 
     def _segment(self, t_in, t_out):
+        """The segment from t_in to t_out, or "rejected" when the interval is empty."""
         if t_in > t_out + 1e-12:
-            return None
+            return "rejected"
         return np.array([self.p0 + t_in * (self.p1 - self.p0),
                          self.p0 + t_out * (self.p1 - self.p0)])
 
@@ -1066,36 +1078,36 @@ class LiangBarskyClip3D(_Listed):
         return self.expected is None or not _same_segment(self.expected[0], self.expected[1])
 
     def mistakes(self):
-        swapped = None if self._parallel_outside() else \
+        swapped = "rejected" if self._parallel_outside() else \
             self._segment(*_lb_interval(self._table, swap=True))
-        unclamped = None if self._parallel_outside() else \
+        unclamped = "rejected" if self._parallel_outside() else \
             self._segment(*_lb_interval(self._table, clamp=False))
         t_in, t_out = _lb_interval(self._table)
         unchecked = np.array([self.p0 + t_in * (self.p1 - self.p0),
                               self.p0 + t_out * (self.p1 - self.p0)])
         return [
-            (unchecked, r"Nothing of this segment is inside: check the interval before you "
-             r"compute points. When $t_{in} > t_{out}$ (the segment leaves some side before it "
-             r"has entered all the others), or when a side parallel to the segment has "
-             r"$p_k = 0$ and $q_k < 0$, the segment is rejected.", "empty interval not noticed"),
-            (swapped, r"Entering and leaving are swapped: a side with $p_k < 0$ is entered "
-             r"(it raises $t_{in}$), one with $p_k > 0$ is left (it lowers $t_{out}$). In 3D "
-             r"there are six sides; $p_k$ and $q_k$ for near and far are built from $z$ like "
-             r"those for left and right from $x$.", "entering/leaving swapped"),
-            (unclamped, r"The end points lie beyond the original segment: start from "
-             r"$[t_{in}, t_{out}] = [0, 1]$, so that crossings before $p_0$ or after $p_1$ do "
-             r"not count.", "not clamped"),
+            Mistake(unchecked, r"Nothing of this segment is inside: check the interval before you "
+                    r"compute points. When $t_{in} > t_{out}$ (the segment leaves some side before "
+                    r"it has entered all the others), or when a side parallel to the segment has "
+                    r"$p_k = 0$ and $q_k < 0$, the segment is rejected.",
+                    "empty interval not noticed", numeric=False),
+            Mistake(swapped, r"Entering and leaving are swapped: a side with $p_k < 0$ is entered "
+                    r"(it raises $t_{in}$), one with $p_k > 0$ is left (it lowers $t_{out}$). In "
+                    r"3D there are six sides; $p_k$ and $q_k$ for near and far are built from $z$ "
+                    r"like those for left and right from $x$.",
+                    "entering/leaving swapped", numeric=False),
+            Mistake(unclamped, r"The end points lie beyond the original segment: start from "
+                    r"$[t_{in}, t_{out}] = [0, 1]$, so that crossings before $p_0$ or after $p_1$ "
+                    r"do not count.", "not clamped", numeric=False),
         ]
 
     def separated(self, mistakes):
-        live = [m[0] for m in mistakes if not _equal_answers(m[0], self.expected)]
+        live = [m.value for m in mistakes if not _equal_answers(m.value, self.expected)]
         return bool(live) and all(not _equal_answers(a, b) for i, a in enumerate(live)
                                   for b in live[i + 1:])
 
     def _check(self, answer):
-        mistakes = [(("rejected" if v is None else v), text, key)
-                    for v, text, key in self._mistakes]
-        return _segment_feedback(answer, self.expected, mistakes, 3,
+        return _segment_feedback(answer, self.expected, self._mistakes, 3,
                                  r"Per side: $p_k$, $q_k$, $t_k = q_k / p_k$; "
                                  r"$t_{in} = \max(0, t_k : p_k < 0)$, "
                                  r"$t_{out} = \min(1, t_k : p_k > 0)$; the segment is rejected "
@@ -1630,16 +1642,19 @@ class PaintersOrder(_Listed):
         nearest = [d.max() for d in self.depths]
         mean = [d.mean() for d in self.depths]
         return [
-            (self.expected[::-1], r"You drew the nearest polygon first; it would then be "
-             r"painted over by the farther ones. The painter paints the background first: "
-             r"from the farthest polygon to the nearest. The eye looks down $-z_e$, so the "
-             r"farthest point is the one with the **most negative** $z_e$.", "nearest first"),
-            ([int(i) for i in np.argsort(nearest, kind="stable")], r"You sorted by each "
-             r"polygon's nearest vertex. Depth sort keys each polygon by its **farthest** "
-             r"point (smallest $z_e$) and draws those first.", "sorted by nearest vertex"),
-            ([int(i) for i in np.argsort(mean, kind="stable")], r"You sorted by the average "
-             r"depth of the vertices. The depth sort described here keys each polygon by its "
-             r"**farthest** vertex (smallest $z_e$).", "sorted by average depth"),
+            Mistake(self.expected[::-1], r"You drew the nearest polygon first; it would then be "
+                    r"painted over by the farther ones. The painter paints the background first: "
+                    r"from the farthest polygon to the nearest. The eye looks down $-z_e$, so the "
+                    r"farthest point is the one with the **most negative** $z_e$.",
+                    "nearest first", numeric=False),
+            Mistake([int(i) for i in np.argsort(nearest, kind="stable")], r"You sorted by each "
+                    r"polygon's nearest vertex. Depth sort keys each polygon by its **farthest** "
+                    r"point (smallest $z_e$) and draws those first.",
+                    "sorted by nearest vertex", numeric=False),
+            Mistake([int(i) for i in np.argsort(mean, kind="stable")], r"You sorted by the average "
+                    r"depth of the vertices. The depth sort described here keys each polygon by "
+                    r"its **farthest** vertex (smallest $z_e$).",
+                    "sorted by average depth", numeric=False),
         ]
 
     def _farthest(self):
@@ -1651,7 +1666,7 @@ class PaintersOrder(_Listed):
         return all(len(set(k)) == len(k) for k in keys)
 
     def separated(self, mistakes):
-        values = [tuple(m[0]) for m in mistakes]
+        values = [tuple(m.value) for m in mistakes]
         values.append(tuple(self.expected))
         return len(set(values)) == len(values)
 
@@ -1661,9 +1676,9 @@ class PaintersOrder(_Listed):
             return order
         if order == self.expected:
             return Feedback("correct", "The drawing order is right.")
-        for wrong, explanation, key in self._mistakes:
-            if order == wrong:
-                return Feedback("wrong", explanation, key)
+        for mistake in self._mistakes:
+            if order == mistake.value:
+                return Feedback("wrong", mistake.explanation, mistake.key)
         return Feedback("wrong", r"Not the depth-sort order. For each polygon find its "
                         r"farthest vertex (smallest $z_e$); draw the polygon whose farthest "
                         r"vertex is farthest first.", "order differs")
@@ -1756,21 +1771,23 @@ class PainterFailure(_Listed):
         overlaps = {i for i, here in enumerate(self._coverage) if len(here) >= 2}
         reversed_paint = _paint(self._coverage, self.order[::-1])
         return [
-            (set(), r"Depth sorting does go wrong here. A polygon keyed by a far end point can "
-             r"still be **in front** of another one at some pixels (long, slanted polygons, or "
-             r"polygons that cross), and there the later one is painted over it. Compare, at "
-             r"every pixel, the segment painted last with the nearest one.", "no failure"),
-            (overlaps, r"Not every pixel where segments overlap goes wrong: where the segment "
-             r"painted last is also the nearest, the picture is right. List only the pixels "
-             r"where the last-painted segment is not the nearest.", "all overlaps"),
-            ({i for i in range(_STRIP) if reversed_paint[i] != self.correct[i]}, r"You painted "
-             r"from the nearest segment to the farthest. The painter paints the farthest first "
-             r"(sorted by the farthest end point), so that nearer segments cover it.",
-             "nearest first"),
+            Mistake(set(), r"Depth sorting does go wrong here. A polygon keyed by a far end point "
+                    r"can still be **in front** of another one at some pixels (long, slanted "
+                    r"polygons, or polygons that cross), and there the later one is painted over "
+                    r"it. Compare, at every pixel, the segment painted last with the nearest one.",
+                    "no failure", numeric=False),
+            Mistake(overlaps, r"Not every pixel where segments overlap goes wrong: where the "
+                    r"segment painted last is also the nearest, the picture is right. List only "
+                    r"the pixels where the last-painted segment is not the nearest.",
+                    "all overlaps", numeric=False),
+            Mistake({i for i in range(_STRIP) if reversed_paint[i] != self.correct[i]}, r"You "
+                    r"painted from the nearest segment to the farthest. The painter paints the "
+                    r"farthest first (sorted by the farthest end point), so that nearer segments "
+                    r"cover it.", "nearest first", numeric=False),
         ]
 
     def separated(self, mistakes):
-        values = [frozenset(m[0]) for m in mistakes] + [frozenset(self.expected)]
+        values = [frozenset(m.value) for m in mistakes] + [frozenset(self.expected)]
         return len(set(values)) == len(values)
 
     def _check(self, answer):

@@ -148,8 +148,9 @@ class _Parts(DrawnExercise):
 class _Record(DrawnExercise):
     """An answer that is a short tuple of whole numbers, matched whole against the slips.
 
-    ``self.expected`` is a tuple; ``mistakes()`` returns ``(tuple, explanation, key)``
-    triples. ``fields`` names the numbers, for the feedback on an unexplained answer.
+    ``self.expected`` is a tuple; ``mistakes()`` returns Mistakes whose values are tuples
+    (``numeric=False``). ``fields`` names the numbers, for the feedback on an unexplained
+    answer.
     """
 
     answer_form = "custom"
@@ -157,14 +158,14 @@ class _Record(DrawnExercise):
     low, high = None, None
 
     def keep(self, mistakes):
-        return [m for m in mistakes if m[0] != self.expected]
+        return [m for m in mistakes if m.value != self.expected]
 
     def separated(self, mistakes):
         seen = {}
-        for value, _, key in mistakes:
-            if value == self.expected:
+        for m in mistakes:
+            if m.value == self.expected:
                 return False
-            if seen.setdefault(value, key) != key:
+            if seen.setdefault(m.value, m.key) != m.key:
                 return False
         return True
 
@@ -177,9 +178,9 @@ class _Record(DrawnExercise):
             return value
         if value == self.expected:
             return Feedback("correct", f"All {len(self.fields)} entries are right.")
-        for wrong, explanation, key in self._mistakes:
-            if value == wrong:
-                return Feedback("wrong", explanation, key)
+        for mistake in self._mistakes:
+            if value == mistake.value:
+                return Feedback("wrong", mistake.explanation, mistake.key)
         off = [name for name, a, b in zip(self.fields, value, self.expected) if a != b]
         return Feedback("wrong", "Not right yet: " + ", ".join(off) + ". " + self.hint,
                         "entries differ")
@@ -755,20 +756,22 @@ class WingedEdgeRecord(_Record):
     def mistakes(self):
         lf, rf, lp, ln, rp, rn = self.expected
         return [
-            ((rf, lf, rp, rn, lp, ln), r"Left and right are swapped. The **left** face is the "
-             r"one that walks the edge from start to end (it lists start, then end); the right "
-             r"face walks it from end to start. Each face keeps its own two wings.",
-             "left and right swapped"),
-            ((lf, rf, ln, lp, rn, rp), r"*prev* and *next* are swapped. Walk around each face "
-             r"counter-clockwise (the order its vertices are listed in): *prev* is the edge you "
-             r"come from just before $e$, *next* the edge you take just after it.",
-             "prev and next swapped"),
-            ((lf, rf, lp, ln, rn, rp), r"The right wings are the wrong way round. The right "
-             r"face walks the edge from **end to start**: its *prev* edge ends at the end "
-             r"vertex, its *next* edge leaves from the start vertex.", "right walk reversed"),
-            ((lf, rf, rp, rn, lp, ln), r"The faces are right but the wings belong to the other "
-             r"face: the left wings are the edges before and after $e$ around the left face.",
-             "wings of the other face"),
+            Mistake((rf, lf, rp, rn, lp, ln), r"Left and right are swapped. The **left** face is "
+                    r"the one that walks the edge from start to end (it lists start, then end); "
+                    r"the right face walks it from end to start. Each face keeps its own two "
+                    r"wings.",
+                    "left and right swapped", numeric=False),
+            Mistake((lf, rf, ln, lp, rn, rp), r"*prev* and *next* are swapped. Walk around each "
+                    r"face counter-clockwise (the order its vertices are listed in): *prev* is the "
+                    r"edge you come from just before $e$, *next* the edge you take just after it.",
+                    "prev and next swapped", numeric=False),
+            Mistake((lf, rf, lp, ln, rn, rp), r"The right wings are the wrong way round. The right "
+                    r"face walks the edge from **end to start**: its *prev* edge ends at the end "
+                    r"vertex, its *next* edge leaves from the start vertex.",
+                    "right walk reversed", numeric=False),
+            Mistake((lf, rf, rp, rn, lp, ln), r"The faces are right but the wings belong to the "
+                    r"other face: the left wings are the edges before and after $e$ around the "
+                    r"left face.", "wings of the other face", numeric=False),
         ]
 
     def statement(self):
@@ -934,15 +937,16 @@ class OneRing(_Record):
     def mistakes(self):
         first, *rest = self.expected
         n = len(self.expected)
-        found = [(tuple([first] + rest[::-1]), r"You went round **clockwise**. "
-                  r"$\operatorname{next}(\operatorname{twin}(h))$ turns clockwise around the "
-                  r"origin; $\operatorname{twin}(\operatorname{prev}(h))$ turns "
-                  r"counter-clockwise: `prev(h)` enters $v$ along the face of $h$, and its twin "
-                  r"leaves $v$ along the next edge counter-clockwise.", "clockwise")]
+        found = [Mistake(tuple([first] + rest[::-1]), r"You went round **clockwise**. "
+                         r"$\operatorname{next}(\operatorname{twin}(h))$ turns clockwise around "
+                         r"the origin; $\operatorname{twin}(\operatorname{prev}(h))$ turns "
+                         r"counter-clockwise: `prev(h)` enters $v$ along the face of $h$, and its "
+                         r"twin leaves $v$ along the next edge counter-clockwise.",
+                         "clockwise", numeric=False)]
         for k in range(1, n):
-            found.append((self.expected[k:] + self.expected[:k], r"Right neighbours in the "
-                          r"right order, but the list must start with the target of the given "
-                          r"half-edge $h$.", "wrong start"))
+            found.append(Mistake(self.expected[k:] + self.expected[:k], r"Right neighbours in the "
+                                 r"right order, but the list must start with the target of the "
+                                 r"given half-edge $h$.", "wrong start", numeric=False))
         return found
 
     def separated(self, mistakes):

@@ -924,22 +924,22 @@ class ActiveControlPoints(_Chapter7):
         many = (r"One control point too many: exactly $p + 1$ control points act on a knot "
                 r"span, $P_{k-p}, \dots, P_k$ for $t \in [u_k, u_{k+1})$.")
         candidates = [
-            (set(range(k - p + 1, k + 2)), shifted, "off by one"),
-            (set(range(k - p - 1, k)), shifted, "off by one"),
-            (set(range(k - p + 1, k + 1)), few, "one too few"),
-            (set(range(k - p, k)), few, "one too few"),
-            (set(range(k - p - 1, k + 1)), many, "one too many"),
-            (set(range(k - p, k + 2)), many, "one too many"),
-            (set(range(N)), r"That is every control point: the Bézier way of thinking "
-             r"(pseudo-local control). A B-spline has **local** control: each basis function "
-             r"is non-zero on $p + 1$ spans only, so at one $t$ just $p + 1$ control points "
-             r"act, $P_{k-p}, \dots, P_k$ for $t \in [u_k, u_{k+1})$.", "global control"),
+            Mistake(set(range(k - p + 1, k + 2)), shifted, "off by one", numeric=False),
+            Mistake(set(range(k - p - 1, k)), shifted, "off by one", numeric=False),
+            Mistake(set(range(k - p + 1, k + 1)), few, "one too few", numeric=False),
+            Mistake(set(range(k - p, k)), few, "one too few", numeric=False),
+            Mistake(set(range(k - p - 1, k + 1)), many, "one too many", numeric=False),
+            Mistake(set(range(k - p, k + 2)), many, "one too many", numeric=False),
+            Mistake(set(range(N)), r"That is every control point: the Bézier way of thinking "
+                    r"(pseudo-local control). A B-spline has **local** control: each basis "
+                    r"function is non-zero on $p + 1$ spans only, so at one $t$ just $p + 1$ "
+                    r"control points act, $P_{k-p}, \dots, P_k$ for $t \in [u_k, u_{k+1})$.",
+                    "global control", numeric=False),
         ]
-        return [(s, text, key) for s, text, key in candidates
-                if min(s) >= 0 and max(s) < N]
+        return [m for m in candidates if min(m.value) >= 0 and max(m.value) < N]
 
     def keep(self, mistakes):
-        return [m for m in mistakes if m[0] != self.expected]
+        return [m for m in mistakes if m.value != self.expected]
 
     def separated(self, mistakes):
         return len(self.expected) < self.n_control
@@ -951,9 +951,9 @@ class ActiveControlPoints(_Chapter7):
         if value == self.expected:
             return Feedback("correct", f"Exactly these {self.p + 1} control points shape the "
                             "curve at this t.")
-        for wrong, explanation, key in self._mistakes:
-            if value == wrong:
-                return Feedback("wrong", explanation, key)
+        for mistake in self._mistakes:
+            if value == mistake.value:
+                return Feedback("wrong", mistake.explanation, mistake.key)
         missing, extra = sorted(self.expected - value), sorted(value - self.expected)
         parts = []
         if extra:
@@ -1295,24 +1295,24 @@ class ConicType(_Chapter7):
     def mistakes(self):
         swap = {"ellipse": "hyperbola", "hyperbola": "ellipse", "parabola": "parabola"}
         return [
-            ([curves.conic_type(w1) for _, w1, _ in self.weights], r"You judged each arc by "
-             r"its middle weight alone. The rule $w < 1$ / $w = 1$ / $w > 1$ holds for the "
-             r"standard form with end weights 1. Bring each arc to that form first: the curve "
-             r"does not change when all weights are multiplied by $c$, nor when they become "
-             r"$(w_0, c\,w_1, c^2 w_2)$, so the number that decides is "
-             r"$w = \frac{w_1}{\sqrt{w_0 w_2}}$.", "middle weight alone"),
-            ([swap[name] for name in self.expected], r"Ellipse and hyperbola are swapped. A "
-             r"small middle weight lets the curve stay away from $P_1$, closing it up: "
-             r"$w < 1$ gives an ellipse; a large one pulls the curve towards $P_1$ and open: "
-             r"$w > 1$ gives a hyperbola (with $w = \frac{w_1}{\sqrt{w_0 w_2}}$).",
-             "ellipse and hyperbola swapped"),
+            Mistake([curves.conic_type(w1) for _, w1, _ in self.weights], r"You judged each arc by "
+                    r"its middle weight alone. The rule $w < 1$ / $w = 1$ / $w > 1$ holds for the "
+                    r"standard form with end weights 1. Bring each arc to that form first: the "
+                    r"curve does not change when all weights are multiplied by $c$, nor when they "
+                    r"become $(w_0, c\,w_1, c^2 w_2)$, so the number that decides is "
+                    r"$w = \frac{w_1}{\sqrt{w_0 w_2}}$.", "middle weight alone", numeric=False),
+            Mistake([swap[name] for name in self.expected], r"Ellipse and hyperbola are swapped. A "
+                    r"small middle weight lets the curve stay away from $P_1$, closing it up: "
+                    r"$w < 1$ gives an ellipse; a large one pulls the curve towards $P_1$ and "
+                    r"open: $w > 1$ gives a hyperbola (with $w = \frac{w_1}{\sqrt{w_0 w_2}}$).",
+                    "ellipse and hyperbola swapped", numeric=False),
         ]
 
     def keep(self, mistakes):
-        return [m for m in mistakes if m[0] != self.expected]
+        return [m for m in mistakes if m.value != self.expected]
 
     def separated(self, mistakes):
-        values = [tuple(m[0]) for m in mistakes]
+        values = [tuple(m.value) for m in mistakes]
         return tuple(self.expected) not in values and len(set(values)) == len(values)
 
     def _judge(self, answer):
@@ -1321,9 +1321,9 @@ class ConicType(_Chapter7):
             return names
         if names == self.expected:
             return Feedback("correct", "All three conic types are right.")
-        for wrong, explanation, key in self._mistakes:
-            if names == wrong:
-                return Feedback("wrong", explanation, key)
+        for mistake in self._mistakes:
+            if names == mistake.value:
+                return Feedback("wrong", mistake.explanation, mistake.key)
         bad = [str(k + 1) for k, (a, b) in enumerate(zip(names, self.expected)) if a != b]
         which = f"Arc {bad[0]} is" if len(bad) == 1 else f"Arcs {', '.join(bad)} are"
         return Feedback("wrong", f"{which} not right yet. For each arc compute "

@@ -128,16 +128,22 @@ class Mistake:
         What the student did and what to do instead (Markdown, may contain LaTeX).
     key : str
         A short name of the mistake (``"wrong order"``), reported as ``Feedback.diagnosis``.
+    numeric : bool
+        Whether `value` is numbers (kept as a float array, compared within a tolerance). False
+        for an answer compared as it is: a set of indices, a list of words or whole numbers, a
+        segment or None.
 
     Examples
     --------
     >>> m = Mistake([[1, 0], [0, 1]], "You returned the identity.", "identity")
     >>> m.key
     'identity'
+    >>> Mistake({0, 2}, "You listed the front faces.", "front faces", numeric=False).value
+    {0, 2}
     """
 
-    def __init__(self, value, explanation, key):
-        self.value = np.asarray(value, dtype=float)
+    def __init__(self, value, explanation, key, numeric=True):
+        self.value = np.asarray(value, dtype=float) if numeric else value
         self.explanation = explanation
         self.key = key
 
