@@ -1476,77 +1476,79 @@ def _properties_of(kind):
     return holds
 
 
+#: Why each property of the menu holds or fails for a type: {name: (if it holds, if it fails)}.
+#: ``{thing}`` stands for "curve" or "surface"; a property that holds for every type has one
+#: sentence for both.
+_PROPERTY_REASONS = {
+    "convex hull": 2 * (
+        r"**Convex hull** holds for every type here: the blending functions are "
+        r"non-negative (weights positive) and add up to 1, so each point is a convex "
+        r"combination of the control points.",),
+    "affine invariance": 2 * (
+        r"**Affine invariance** holds for every type here: the blending functions add "
+        r"up to 1, so mapping the control points by an affine map maps every point of "
+        r"the {thing} by it.",),
+    "endpoint interpolation": 2 * (
+        r"**Endpoint interpolation** holds: the first and last blending functions are "
+        r"1 at the ends (for B-splines thanks to the clamped knots), so the curve starts "
+        r"and ends at the end control points, and a patch passes through its corners.",),
+    "strong convex hull": (
+        r"**Strong convex hull** holds for B-splines and NURBS: "
+        r"on one knot span only $p + 1$ basis functions are non-zero, so each piece "
+        r"lies in the hull of those few control points.",
+        r"**Strong convex hull** is a B-spline property (each piece "
+        r"in the hull of its $p + 1$ active points). A Bézier {thing}"
+        r" is a single piece whose blending functions involve all control points: it "
+        r"has the ordinary convex hull property only."),
+    "local control": (
+        r"**Local control** holds for B-splines and NURBS: "
+        r"$N_{i,p}$ is zero outside $[u_i, u_{i+p+1})$, so moving $P_i$ changes only "
+        r"that part.",
+        r"**Local control** is B-spline only. Every Bernstein polynomial "
+        r"is non-zero on the whole open interval $(0, 1)$, so moving one control point of "
+        r"a Bézier {thing} moves every point except the ends: pseudo-local "
+        r"control."),
+    "independent degree": (
+        r"**Independent degree** holds for B-splines and NURBS: "
+        r"more control points mean more knots and pieces, while the degree $p$ "
+        r"stays whatever you choose.",
+        r"**Independent degree** is B-spline only: a Bézier {thing}"
+        r" with $n + 1$ control points (per direction) has degree $n$, so more points "
+        r"mean a higher degree."),
+    "pseudo-local control": (
+        r"**Pseudo-local control** holds for Bézier types: moving $P_i$ moves "
+        r"every point of the {thing} (all Bernstein polynomials are positive inside "
+        r"the domain), most near the parameter $i / n$.",
+        r"**Pseudo-local control** describes Bézier types, whose every point moves "
+        r"when one control point moves. B-splines and NURBS have true **local** "
+        r"control instead."),
+    "projective invariance": (
+        r"**Projective invariance** holds for rational types: transform the "
+        r"homogeneous control points $(w_i P_i, w_i)$ and the new last coordinates "
+        r"are the new weights.",
+        r"**Projective invariance** needs weights, i.e. a rational type. A "
+        r"perspective map divides by a coordinate that changes along the "
+        r"{thing}; a polynomial {thing} has no weights to absorb it, so it is only "
+        r"affinely invariant."),
+    "exact conics": (
+        r"**Exact conics** hold for rational types: with weights "
+        r"$(1, \cos\frac{\theta}{2}, 1)$ a quadratic arc is exactly a circular arc, "
+        r"and NURBS surfaces give exact spheres and cylinders.",
+        r"**Exact conics** need weights: a circle has no polynomial parametrisation, so "
+        r"a non-rational {thing} can only approximate it."),
+    "variation diminishing": (
+        r"**Variation diminishing** holds for every curve type here (with positive "
+        r"weights): a line crosses the curve at most as often as the control polygon.",
+        r"**Variation diminishing** does not carry over to surfaces: there is no "
+        r"counterpart of it for tensor-product patches."),
+}
+
+
 def _property_reason(name, kind, holds):
     """Why property `name` holds (holds=True) or fails for `kind`: a sentence for feedback."""
-    spline = "B-spline" in kind or "NURBS" in kind
+    if_holds, if_fails = _PROPERTY_REASONS[name]
     thing = "surface" if kind.endswith("surface") else "curve"
-    if name == "convex hull":
-        return (r"**Convex hull** holds for every type here: the blending functions are "
-                r"non-negative (weights positive) and add up to 1, so each point is a convex "
-                r"combination of the control points.")
-    if name == "affine invariance":
-        return (r"**Affine invariance** holds for every type here: the blending functions add "
-                r"up to 1, so mapping the control points by an affine map maps every point of "
-                rf"the {thing} by it.")
-    if name == "endpoint interpolation":
-        return (r"**Endpoint interpolation** holds: the first and last blending functions are "
-                r"1 at the ends (for B-splines thanks to the clamped knots), so the curve starts "
-                r"and ends at the end control points, and a patch passes through its corners.")
-    if name in ("strong convex hull", "local control", "independent degree"):
-        if holds:
-            return {
-                "strong convex hull": r"**Strong convex hull** holds for B-splines and NURBS: "
-                    r"on one knot span only $p + 1$ basis functions are non-zero, so each piece "
-                    r"lies in the hull of those few control points.",
-                "local control": r"**Local control** holds for B-splines and NURBS: "
-                    r"$N_{i,p}$ is zero outside $[u_i, u_{i+p+1})$, so moving $P_i$ changes only "
-                    r"that part.",
-                "independent degree": r"**Independent degree** holds for B-splines and NURBS: "
-                    r"more control points mean more knots and pieces, while the degree $p$ "
-                    r"stays whatever you choose.",
-            }[name]
-        return {
-            "strong convex hull": r"**Strong convex hull** is a B-spline property (each piece "
-                r"in the hull of its $p + 1$ active points). A Bézier " + thing
-                + r" is a single piece whose blending functions involve all control points: it "
-                r"has the ordinary convex hull property only.",
-            "local control": r"**Local control** is B-spline only. Every Bernstein polynomial "
-                r"is non-zero on the whole open interval $(0, 1)$, so moving one control point of "
-                r"a Bézier " + thing + r" moves every point except the ends: pseudo-local "
-                r"control.",
-            "independent degree": r"**Independent degree** is B-spline only: a Bézier " + thing
-                + r" with $n + 1$ control points (per direction) has degree $n$, so more points "
-                r"mean a higher degree.",
-        }[name]
-    if name == "pseudo-local control":
-        if holds:
-            return (r"**Pseudo-local control** holds for Bézier types: moving $P_i$ moves "
-                    rf"every point of the {thing} (all Bernstein polynomials are positive inside "
-                    r"the domain), most near the parameter $i / n$.")
-        return (r"**Pseudo-local control** describes Bézier types, whose every point moves "
-                r"when one control point moves. B-splines and NURBS have true **local** "
-                r"control instead.")
-    if name in ("projective invariance", "exact conics"):
-        if name == "projective invariance":
-            return (r"**Projective invariance** holds for rational types: transform the "
-                    r"homogeneous control points $(w_i P_i, w_i)$ and the new last coordinates "
-                    r"are the new weights." if holds else
-                    r"**Projective invariance** needs weights, i.e. a rational type. A "
-                    r"perspective map divides by a coordinate that changes along the "
-                    rf"{thing}; a polynomial {thing} has no weights to absorb it, so it is only "
-                    r"affinely invariant.")
-        return (r"**Exact conics** hold for rational types: with weights "
-                r"$(1, \cos\frac{\theta}{2}, 1)$ a quadratic arc is exactly a circular arc, "
-                r"and NURBS surfaces give exact spheres and cylinders." if holds else
-                r"**Exact conics** need weights: a circle has no polynomial parametrisation, so "
-                rf"a non-rational {thing} can only approximate it.")
-    if name == "variation diminishing":
-        return (r"**Variation diminishing** holds for every curve type here (with positive "
-                r"weights): a line crosses the curve at most as often as the control polygon."
-                if holds else
-                r"**Variation diminishing** does not carry over to surfaces: there is no "
-                r"counterpart of it for tensor-product patches.")
-    raise KeyError(name)       # pragma: no cover - every menu entry is handled above
+    return (if_holds if holds else if_fails).replace("{thing}", thing)
 
 
 def _normalise_property(text):
