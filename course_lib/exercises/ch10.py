@@ -27,7 +27,7 @@ import numpy as np
 from .. import colormaps as cm
 from .. import format as fmt
 from .core import (ATOL, DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, data_note,
-                   has_placeholder, hinted, pick, read_floats, read_names)
+                   has_placeholder, pick, read_floats, read_names)
 
 __all__ = [
     "EXERCISES",
@@ -47,36 +47,17 @@ __all__ = [
 _num = fmt.number
 _vec = fmt.vector_latex
 
-#: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
-_GENERIC = {"components differ", "wrong length", "opposite sign", "value differs"}
-
 
 def _values_words(values):
     return ", ".join(f"${_num(v)}$" for v in values)
 
 
 class _Chapter10(DrawnExercise):
-    """The chapter's base: an answer no anticipated slip explains gets ``hint``.
+    """The chapter's base: answers are lists of values, not directions, and never True/False
+    (see ``DrawnExercise.vector_like`` and ``reject_bool``)."""
 
-    Core's vector diagnosis reads a wrong answer of the right direction as "right direction,
-    wrong length": that means nothing for a list of values, so it becomes the list of the
-    components that are off.
-    """
-
-    hint = ""
-
-    def _check(self, answer):
-        if isinstance(answer, (bool, np.bool_)):
-            return Feedback("invalid", "Your answer is True or False; give a number.",
-                            "not a number")
-        feedback = super()._check(answer)
-        if feedback.diagnosis == "wrong length":
-            value = np.ravel(read_floats(answer))
-            off = [int(i) for i in np.flatnonzero(~np.isclose(value, np.ravel(self.expected),
-                                                                rtol=1e-3, atol=ATOL))]
-            feedback = Feedback("wrong", f"Components {off} (counted from 0) of {self.what} "
-                                "are off.", "components differ")
-        return hinted(feedback, self.hint, _GENERIC)
+    vector_like = False
+    reject_bool = True
 
 
 # ---------------------------------------------------------------------------------------------

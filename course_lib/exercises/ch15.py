@@ -30,8 +30,7 @@ import numpy as np
 
 from .. import format as fmt
 from .. import raytracing as rt
-from .core import (APART, DECIMALS, SAME, DrawnExercise, Mistake, PartsAnswer, data_note, hinted,
-                   pick)
+from .core import (APART, DECIMALS, SAME, DrawnExercise, Mistake, PartsAnswer, data_note, pick)
 
 __all__ = [
     "EXERCISES",
@@ -50,10 +49,6 @@ __all__ = [
 _vec = fmt.vector_latex
 _num = fmt.number
 
-#: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
-_GENERIC = {"components differ", "wrong length", "opposite sign", "entries differ", "scaled",
-            "sign", "transposed", "value differs"}
-
 #: Unit vectors with rational components (before permuting the axes and choosing signs).
 _NICE_UNITS = ((1.0, 0.0, 0.0), (0.6, 0.8, 0.0), (2 / 3, 2 / 3, 1 / 3), (2 / 7, 3 / 7, 6 / 7))
 
@@ -67,16 +62,7 @@ def _nice_unit(rng):
     return v + 0.0
 
 
-class _Chapter15(DrawnExercise):
-    """The chapter's base: an answer that no anticipated slip explains gets ``hint``."""
-
-    hint = ""
-
-    def _check(self, answer):
-        return hinted(super()._check(answer), self.hint, _GENERIC)
-
-
-class _Parts(PartsAnswer, _Chapter15):
+class _Parts(PartsAnswer, DrawnExercise):
     """An answer made of several numbers, each with slips of its own (see PartsAnswer)."""
 
     def _check(self, answer):
@@ -87,7 +73,7 @@ class _Parts(PartsAnswer, _Chapter15):
 # Intersections
 # ---------------------------------------------------------------------------------------------
 
-class RaySphereHit(_Chapter15):
+class RaySphereHit(DrawnExercise):
     r"""The point where a ray :math:`o + t\,d` first hits a sphere.
 
     Substituting the ray into :math:`\lVert p - c \rVert^2 = r^2` gives
@@ -254,7 +240,7 @@ class RayTriangleHit(_Parts):
 # Reflection and refraction
 # ---------------------------------------------------------------------------------------------
 
-class ReflectedRay(_Chapter15):
+class ReflectedRay(DrawnExercise):
     r"""The mirror direction :math:`r = d - 2 (d \cdot \hat n)\, \hat n` of an incoming ray.
 
     The normal has whole-number components and is not of unit length.
@@ -317,7 +303,7 @@ class ReflectedRay(_Chapter15):
 _MEDIA = {1.0: "air", 1.5: "glass", 1.33: "water", 2.0: "a dense glass", 1.2: "a plastic"}
 
 
-class RefractedRay(_Chapter15):
+class RefractedRay(DrawnExercise):
     r"""The refracted direction by Snell's law, :math:`t = \eta d + (\eta c_1 - c_2)\, n`.
 
     :math:`\eta = \eta_1 / \eta_2`, :math:`c_1 = -d \cdot n`,
@@ -388,7 +374,7 @@ class RefractedRay(_Chapter15):
             + _VECTOR_3 + "\n\n" + data_note("d", "n", "eta1", "eta2", "angle"))
 
 
-class CriticalAngle(_Chapter15):
+class CriticalAngle(DrawnExercise):
     r"""The critical angle :math:`\theta_c = \arcsin(\eta_2 / \eta_1)` of total internal reflection.
 
     Attributes: ``eta1`` (inside, the denser medium), ``eta2`` (outside).
@@ -437,7 +423,7 @@ class CriticalAngle(_Chapter15):
             + data_note("eta1", "eta2"))
 
 
-class SchlickReflectance(_Chapter15):
+class SchlickReflectance(DrawnExercise):
     r"""Schlick's approximation :math:`F = R_0 + (1 - R_0)(1 - \cos\theta)^5` for a ray from air.
 
     Attributes: ``eta1`` (1, air), ``eta2``, ``angle`` (of incidence, degrees).
@@ -498,7 +484,7 @@ class SchlickReflectance(_Chapter15):
 # The ray tracer: shadows, recursion, ray trees, acceleration
 # ---------------------------------------------------------------------------------------------
 
-class ShadowRay(_Chapter15):
+class ShadowRay(DrawnExercise):
     r"""A point on the floor, a point light and a ball that may be in the way: the intensity.
 
     The shadow ray from the point towards the light is blocked when it hits the ball before the
@@ -586,7 +572,7 @@ class ShadowRay(_Chapter15):
             + data_note("P", "light", "center", "radius", "ka", "kd"))
 
 
-class MirrorChainColour(_Chapter15):
+class MirrorChainColour(DrawnExercise):
     r"""The pixel intensity of a primary ray and its reflections, down to a depth limit.
 
     :math:`I = I_0 + k_{r,0} (I_1 + k_{r,1} (I_2 + \dots))`: every bounce's local intensity is

@@ -30,7 +30,7 @@ import numpy as np
 from .. import format as fmt
 from .. import scivis
 from .core import (APART, ATOL, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake,
-                   data_note, has_placeholder, hinted, pick, read_floats)
+                   data_note, has_placeholder, pick, read_floats)
 
 __all__ = [
     "CompositeFrontToBack",
@@ -49,32 +49,13 @@ __all__ = [
 _num = fmt.number
 _vec = fmt.vector_latex
 
-#: Diagnoses of the generic fallbacks in core (no anticipated mistake matched).
-_GENERIC = {"components differ", "wrong length", "opposite sign", "value differs",
-            "entries differ", "scaled", "sign", "transposed"}
-
 
 class _Chapter18(DrawnExercise):
-    """The chapter's base: an answer no anticipated slip explains gets ``hint``.
+    """The chapter's base: answers are points or pairs of numbers, not directions, and never
+    True/False (see ``DrawnExercise.vector_like`` and ``reject_bool``)."""
 
-    "Right direction, wrong length" means nothing for a point or a pair of numbers: it becomes
-    the list of the components that are off.
-    """
-
-    hint = ""
-
-    def _check(self, answer):
-        if isinstance(answer, (bool, np.bool_)):
-            return Feedback("invalid", "Your answer is True or False; give a number.",
-                            "not a number")
-        feedback = super()._check(answer)
-        if feedback.diagnosis == "wrong length":
-            value = np.ravel(read_floats(answer))[:np.size(self.expected)]
-            off = [int(i) for i in np.flatnonzero(~np.isclose(value, np.ravel(self.expected),
-                                                                rtol=1e-3, atol=ATOL))]
-            feedback = Feedback("wrong", f"Components {off} (counted from 0) of {self.what} "
-                                "are off.", "components differ")
-        return hinted(feedback, self.hint, _GENERIC)
+    vector_like = False
+    reject_bool = True
 
 
 # ---------------------------------------------------------------------------------------------
@@ -302,6 +283,11 @@ def _pairs_of(segments):
     return {frozenset(seg) for seg in segments}
 
 
+def _typed(pairs):
+    """Edge pairs as a student types them: a sorted list of sorted pairs."""
+    return sorted(tuple(sorted(pair)) for pair in pairs)
+
+
 class SaddleResolution(_Chapter18):
     r"""Resolve an ambiguous marching-squares cell (case 5 or 10) with the midpoint decider.
 
@@ -351,19 +337,19 @@ class SaddleResolution(_Chapter18):
         side = "above" if self.centre >= self.level else "below"
         joined = "above" if side == "above" else "below"
         return [
-            (other, rf"The midpoint decider says otherwise: the centre value is the mean of the "
-             rf"corners, ${_num(self.centre)}$, which is **{side}** the level "
-             rf"${_num(self.level)}$. So the centre belongs to the {joined} corners, and the two "
-             rf"{joined} corners are connected through the cell; the segments cut off the other "
-             r"two corners.", "other resolution"),
-            ({frozenset((0, 2)), frozenset((1, 3))}, r"Your two segments cross each other in the "
-             r"middle of the cell. An isoline never crosses itself: each segment must separate "
-             r"one corner (or two neighbouring corners) from the rest, so it joins two "
-             r"neighbouring edges here.", "crossing"),
+            Mistake(_typed(other), rf"The midpoint decider says otherwise: the centre value is "
+                    rf"the mean of the corners, ${_num(self.centre)}$, which is **{side}** the "
+                    rf"level ${_num(self.level)}$. So the centre belongs to the {joined} corners, "
+                    rf"and the two {joined} corners are connected through the cell; the segments "
+                    r"cut off the other two corners.", "other resolution", numeric=False),
+            Mistake([(0, 2), (1, 3)], r"Your two segments cross each other in the middle of the "
+                    r"cell. An isoline never crosses itself: each segment must separate one "
+                    r"corner (or two neighbouring corners) from the rest, so it joins two "
+                    r"neighbouring edges here.", "crossing", numeric=False),
         ]
 
     def keep(self, mistakes):
-        return [m for m in mistakes if m[0] != self.expected]
+        return [m for m in mistakes if _pairs_of(m.value) != self.expected]
 
     def separated(self, mistakes):
         return True
@@ -375,9 +361,9 @@ class SaddleResolution(_Chapter18):
         if pairs == self.expected:
             return Feedback("correct", f"Right: the centre value {_num(self.centre)} decides "
                             "how the corners are joined.")
-        for value, explanation, key in self._mistakes:
-            if pairs == value:
-                return Feedback("wrong", explanation, key)
+        for mistake in self._mistakes:
+            if pairs == _pairs_of(mistake.value):
+                return Feedback("wrong", mistake.explanation, mistake.key)
         # the three ways to pair four edges are all covered above; kept as a safe default
         return Feedback("wrong", "These segments do not resolve the saddle.", "other")
 

@@ -1,0 +1,1 @@
+"""The exercise machinery, one module per topic; import it from :mod:`course_lib.exercises.core`."""

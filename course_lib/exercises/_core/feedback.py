@@ -1,0 +1,650 @@
+"""The verdict on an answer: :class:`Feedback`, the anticipated :class:`Mistake` and the
+diagnoses that say what is wrong (a matrix, a vector, a number, several numbers, names).
+
+Part of :mod:`course_lib.exercises.core`, which imports everything from here.
+"""
+import math
+
+import numpy as np
+
+from ... import format as fmt
+
+__all__ = [
+    "Feedback",
+    "Mistake",
+    "close",
+    "diagnose_matrix",
+    "diagnose_number",
+    "diagnose_parts",
+    "diagnose_vector",
+    "has_placeholder",
+    "hinted",
+    "is_unanswered",
+    "read_floats",
+    "read_names",
+]
+
+
+#: Default absolute tolerance: answers computed by hand to 3 decimals pass.
+ATOL = 2e-3
+
+
+#: What an unanswered exercise says.
+UNANSWERED = "Replace the `...` with your answer and run the cell again."
+#: The diagnoses that name no anticipated mistake (the generic ones of :func:`diagnose_matrix`,
+#: :func:`diagnose_vector`, :func:`diagnose_number` and :func:`diagnose_parts`): a wrong answer
+#: diagnosed so is followed by the exercise's ``hint`` (see :class:`DrawnExercise`).
+UNEXPLAINED = frozenset({"components differ", "wrong length", "opposite sign", "entries differ",
+                         "scaled", "sign", "transposed", "value differs"})
+
+
+class Feedback:
+    """The verdict on an answer: ``status`` plus a message written for the student.
+
+    ``status`` is one of ``"correct"``, ``"wrong"``, ``"unanswered"`` or ``"invalid"`` (the
+    answer could not be read, e.g. a string or the wrong shape). ``bool(feedback)`` is True only
+    for a correct answer; ``feedback.diagnosis`` is a short key of the mistake found (such as
+    ``"transposed"``), for tests and statistics.
+
+    Examples
+    --------
+    >>> fb = Feedback("wrong", "Your matrix is transposed.", diagnosis="transposed")
+    >>> bool(fb), fb.diagnosis
+    (False, 'transposed')
+    >>> print(fb)
+    Not yet: Your matrix is transposed.
+    """
+
+    _HEADINGS = {"correct": "Correct", "wrong": "Not yet", "unanswered": "Not answered yet",
+                 "invalid": "Cannot read your answer"}
+    _ICONS = {"correct": "\u2705", "wrong": "\u274c", "unanswered": "\u270f\ufe0f",
+              "invalid": "\u26a0\ufe0f"}
+
+    def __init__(self, status, message, diagnosis=None):
+        if status not in self._HEADINGS:
+            raise ValueError(f"status must be one of {sorted(self._HEADINGS)}, got {status!r}")
+        self.status = status
+        self.message = message
+        self.diagnosis = diagnosis or status
+
+    def __bool__(self):
+        return self.status == "correct"
+
+    def __str__(self):
+        return f"{self._HEADINGS[self.status]}: {self.message}"
+
+    def __repr__(self):
+        return str(self)
+
+    def _repr_markdown_(self):
+        return f"{self._ICONS[self.status]} **{self._HEADINGS[self.status]}.** {self.message}"
+
+
+class Mistake:
+    """A typical wrong answer an exercise anticipates: the value it would give and why.
+
+    Parameters
+    ----------
+    value : array_like or float
+        The answer that this mistake produces, computed from the question.
+    explanation : str
+        What the student did and what to do instead (Markdown, may contain LaTeX).
+    key : str
+        A short name of the mistake (``"wrong order"``), reported as ``Feedback.diagnosis``.
+    numeric : bool
+        Whether `value` is numbers (kept as a float array, compared within a tolerance). False
+        for an answer compared as it is: a set of indices, a list of words or whole numbers, a
+        segment or None.
+
+    Examples
+    --------
+    >>> m = Mistake([[1, 0], [0, 1]], "You returned the identity.", "identity")
+    >>> m.key
+    'identity'
+    >>> Mistake({0, 2}, "You listed the front faces.", "front faces", numeric=False).value
+    {0, 2}
+    """
+
+    def __init__(self, value, explanation, key, numeric=True):
+        self.value = np.asarray(value, dtype=float) if numeric else value
+        self.explanation = explanation
+        self.key = key
+
+
+def is_unanswered(answer):
+    """True for the placeholders an exercise starts with: ``...`` and ``None``.
+
+    Examples
+    --------
+    >>> is_unanswered(...), is_unanswered(None), is_unanswered(0)
+    (True, True, False)
+    """
+    return answer is None or answer is Ellipsis
+
+
+def _read(answer, what):
+    """The answer as a float array, or a Feedback saying why it cannot be read."""
+    if is_unanswered(answer):
+        return Feedback("unanswered", UNANSWERED)
+    if isinstance(answer, (str, bytes)):
+        return Feedback("invalid", f"Your answer is text ({answer!r}); give {what} as numbers.",
+                        "not a number")
+    try:
+        value = np.asarray(answer, dtype=float)
+    except (TypeError, ValueError):
+        return Feedback("invalid", f"Your answer could not be read as {what}: use a list of "
+                        "numbers, nested lists of equal length, or a numpy array.", "unreadable")
+    if not np.isfinite(value).all():
+        return Feedback("invalid", "Your answer contains NaN or infinity: a division by zero "
+                        "somewhere?", "not finite")
+    return value
+
+
+def _cap(text):
+    """`text` with its first letter upper-cased (str.capitalize would lower-case the rest)."""
+    return text[:1].upper() + text[1:]
+
+
+def _close(a, b, atol):
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and bool(np.allclose(a, b, rtol=1e-3, atol=atol))
+
+
+def _multiple(value, of):
+    """The multiple ``c * of`` that agrees with `value` in the largest entry of `of`.
+
+    `of` itself when there is none (different shapes, or `of` is zero).
+    """
+    if value.shape != of.shape or not of.size:
+        return of
+    k = int(np.argmax(np.abs(of)))
+    if abs(of.flat[k]) < 1e-12:
+        return of
+    return value.flat[k] / of.flat[k] * of
+
+
+def _anticipated(value, mistakes, atol, expected, sign_free=False, projective=False):
+    """The first anticipated mistake `value` matches.
+
+    With `sign_free` a mistake's negative matches too; with `projective` any non-zero multiple
+    of it (a projective matrix and its multiples are the same transformation). A mistake that
+    gives the right answer (up to sign, or up to a factor) is passed over.
+    """
+    signs = (1.0, -1.0) if sign_free else (1.0,)
+    value = np.asarray(value, dtype=float)
+    for mistake in mistakes:
+        if projective:
+            wrong = _multiple(value, mistake.value)
+            if _close(value, wrong, atol) and np.abs(wrong).max(initial=0.0) > 1e-9 \
+                    and not _close(_multiple(mistake.value, expected), mistake.value, atol):
+                return Feedback("wrong", mistake.explanation, mistake.key)
+            continue
+        for sign in signs:
+            wrong = sign * mistake.value
+            if _close(value, wrong, atol) and not _close(wrong, expected, atol) \
+                    and not (sign_free and _close(wrong, -expected, atol)):
+                return Feedback("wrong", mistake.explanation, mistake.key)
+    return None
+
+
+def diagnose_matrix(answer, expected, mistakes=(), atol=ATOL, what="the matrix",
+                    homogeneous_scale=False, transform=True):
+    r"""Compare a matrix answer with the expected one and explain the difference.
+
+    Checks, in order: readable and of the right shape (a 3x3 given where a homogeneous 4x4 is
+    expected is named as such); correct; one of the anticipated `mistakes`; transposed; the
+    inverse; a multiple of the expected matrix; the opposite sign; a few entries with the wrong
+    sign; otherwise the entries that differ.
+
+    The generic feedback assumes a transformation matrix (column vectors, rotations,
+    translations). For other arrays (a table of numbers, an id buffer) pass ``transform=False``:
+    the feedback then speaks of rows, columns and entries only, and the inverse and the
+    homogeneous shape are not suggested.
+
+    Parameters
+    ----------
+    answer : array_like or None
+    expected : array_like
+    mistakes : sequence of Mistake
+        Wrong answers anticipated by the exercise, tried before the generic ones.
+    atol : float
+        Absolute tolerance per entry (relative tolerance 1e-3 on top).
+    what : str
+        How the feedback names the answer.
+    homogeneous_scale : bool
+        Accept any non-zero multiple of `expected` (projective matrices, chapter 4), and
+        recognise any non-zero multiple of an anticipated mistake as that mistake.
+    transform : bool
+        Whether the matrix is a transformation (the default); False for other arrays.
+
+    Returns
+    -------
+    Feedback
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> R = np.array([[0.0, -1.0], [1.0, 0.0]])
+    >>> diagnose_matrix(R.T, R).diagnosis
+    'transposed'
+    >>> bool(diagnose_matrix(R, R)), diagnose_matrix(..., R).status
+    (True, 'unanswered')
+    >>> table = np.array([[1.0, 2.0], [3.0, 4.0]])
+    >>> print(diagnose_matrix(table.T, table, what="the table", transform=False))
+    Not yet: The table is transposed: rows and columns are swapped.
+    """
+    expected = np.asarray(expected, dtype=float)
+    value = _read(answer, what)
+    if isinstance(value, Feedback):
+        return value
+    if value.shape != expected.shape:
+        n = expected.shape[0]
+        hint = ""
+        if transform and value.ndim == 2 and value.shape == (n - 1, n - 1):
+            hint = (f" You gave a {n - 1}x{n - 1} matrix; the question asks for the homogeneous "
+                    f"{n}x{n} one (the extra row and column carry the translation).")
+        return Feedback("invalid", f"{_cap(what)} should have shape {expected.shape}, "
+                        f"yours has shape {value.shape}.{hint}", "wrong shape")
+    if _close(value, expected, atol):
+        return Feedback("correct", f"{_cap(what)} is right.")
+    if homogeneous_scale:
+        ratio = _common_ratio(value, expected)
+        if ratio is not None and abs(ratio) > 1e-9:
+            return Feedback("correct", f"{_cap(what)} is right: it is {fmt.number(ratio)} "
+                            "times the reference matrix, and any non-zero multiple of a "
+                            "projective matrix is the same transformation.")
+    found = _anticipated(value, mistakes, atol, expected, projective=homogeneous_scale)
+    if found is not None:
+        return found
+    n = expected.shape[-1]
+    if expected.ndim == 2 and expected.shape[0] == n and _close(value, expected.T, atol):
+        why = (" With column vectors ($p' = Mp$) the images of the axes are the *columns*, and "
+               "a translation sits in the last *column*." if transform else "")
+        return Feedback("wrong", f"{_cap(what)} is transposed: rows and columns are swapped."
+                        + why, "transposed")
+    if transform and expected.ndim == 2 and expected.shape[0] == n:
+        try:
+            inv = np.linalg.inv(expected)
+        except np.linalg.LinAlgError:
+            inv = None
+        if inv is not None and _close(value, inv, atol):
+            return Feedback("wrong", f"This is the inverse of {what}: it undoes the "
+                            "transformation asked for. Check the direction (signs of angles and "
+                            "displacements).", "inverse")
+    ratio = _common_ratio(value, expected)
+    if ratio is not None and not math.isclose(ratio, 1.0, rel_tol=1e-3):
+        if math.isclose(ratio, -1.0, rel_tol=1e-3):
+            return Feedback("wrong", "Every entry has the wrong sign.", "opposite sign")
+        mine = "Your matrix" if transform else _cap(what)
+        return Feedback("wrong", f"{mine} is {fmt.number(ratio)} times the right one: "
+                        "a factor is missing or doubled somewhere.", "scaled")
+    return _entrywise(value, expected, atol, what, transform)
+
+
+def _common_ratio(value, expected):
+    """The c with value = c * expected, if there is one (else None)."""
+    scale = np.abs(expected).max()
+    if scale == 0:
+        return None
+    k = np.argmax(np.abs(expected))
+    ratio = value.flat[k] / expected.flat[k]
+    return ratio if np.allclose(value, ratio * expected, rtol=1e-3, atol=1e-6) else None
+
+
+def _entrywise(value, expected, atol, what, transform=True):
+    off = ~np.isclose(value, expected, rtol=1e-3, atol=atol)
+    sign_only = off & np.isclose(value, -expected, rtol=1e-3, atol=atol)
+    cells = [tuple(int(i) for i in idx) for idx in np.argwhere(off)]
+    listed = ", ".join(str(c) for c in cells[:6]) + (" ..." if len(cells) > 6 else "")
+    if off.sum() == sign_only.sum():
+        hint = (": check the direction of each rotation (where does the $-\\sin\\theta$ go?) "
+                "and the sign of each displacement." if transform else ".")
+        return Feedback("wrong", f"Right magnitudes but the wrong sign in entries {listed} (row, "
+                        "column, counted from 0)" + hint, "sign")
+    worst = max(cells, key=lambda c: abs(value[c] - expected[c]))
+    return Feedback("wrong", f"{len(cells)} of {value.size} entries of {what} are off, at "
+                    f"{listed} (row, column, counted from 0); the largest difference is "
+                    f"{fmt.number(abs(value[worst] - expected[worst]))} at {worst}.",
+                    "entries differ")
+
+
+def diagnose_vector(answer, expected, mistakes=(), atol=ATOL, what="the vector",
+                    unit=False, sign_free=False):
+    r"""Compare a vector (a point, a direction, a quaternion) with the expected one.
+
+    Checks, in order: readable and the right length; correct (or its negative when
+    `sign_free`, for quaternions and axes); the anticipated `mistakes`; not of unit length
+    when `unit`; right direction but wrong length; the opposite vector; which components are off.
+
+    Parameters
+    ----------
+    answer : array_like or None
+    expected : array_like, shape (n,)
+    mistakes : sequence of Mistake
+    atol : float
+    what : str
+        How the feedback names the answer.
+    unit : bool
+        The answer must have length 1.
+    sign_free : bool
+        ``-expected`` is also right (a quaternion and its negative are the same rotation); the
+        negatives of the anticipated mistakes are recognised too.
+
+    Returns
+    -------
+    Feedback
+
+    Examples
+    --------
+    >>> diagnose_vector([0, 0, 2], [0, 0, 1], unit=True).diagnosis
+    'not normalized'
+    >>> bool(diagnose_vector([0, 0, -1], [0, 0, 1], sign_free=True))
+    True
+    """
+    expected = np.asarray(expected, dtype=float)
+    value = _read(answer, what)
+    if isinstance(value, Feedback):
+        return value
+    if value.shape != expected.shape:
+        return Feedback("invalid", f"{_cap(what)} should have {expected.size} "
+                        f"components, yours has shape {value.shape}.", "wrong shape")
+    if _close(value, expected, atol):
+        return Feedback("correct", f"{_cap(what)} is right.")
+    if sign_free and _close(value, -expected, atol):
+        return Feedback("correct", f"{_cap(what)} is right (it is the negative of the "
+                        "reference answer, which represents the same thing).")
+    found = _anticipated(value, mistakes, atol, expected, sign_free)
+    if found is not None:
+        return found
+    length = float(np.linalg.norm(value))
+    target = float(np.linalg.norm(expected))
+    if length > 1e-9 and target > 1e-9:
+        direction_ok = _close(value / length, expected / target, atol)
+        if sign_free:
+            direction_ok = direction_ok or _close(value / length, -expected / target, atol)
+        if direction_ok:
+            if unit:
+                return Feedback("wrong", f"Right direction, but {what} has length "
+                                f"{fmt.number(length)}: it must be a unit vector (divide by its "
+                                "length).", "not normalized")
+            return Feedback("wrong", f"Right direction, but the length is {fmt.number(length)} "
+                            f"instead of {fmt.number(target)}.", "wrong length")
+    if _close(value, -expected, atol):
+        return Feedback("wrong", f"{_cap(what)} points the opposite way: every "
+                        "component has the wrong sign.", "opposite sign")
+    off = [int(i) for i in np.flatnonzero(~np.isclose(value, expected, rtol=1e-3, atol=atol))]
+    return Feedback("wrong", f"Components {off} (counted from 0) of {what} are off.",
+                    "components differ")
+
+
+def diagnose_number(answer, expected, mistakes=(), atol=ATOL, what="the number",
+                    angle=False):
+    r"""Compare a single number with the expected one.
+
+    With ``angle=True`` the answer is an angle in radians: an answer in degrees, or differing
+    by a full turn, is recognised.
+
+    Parameters
+    ----------
+    answer : float or None
+    expected : float
+    mistakes : sequence of Mistake
+    atol : float
+    what : str
+    angle : bool
+
+    Returns
+    -------
+    Feedback
+
+    Examples
+    --------
+    >>> import math
+    >>> diagnose_number(90, math.pi / 2, angle=True).diagnosis
+    'degrees'
+    """
+    value = _read(answer, what)
+    if isinstance(value, Feedback):
+        return value
+    if value.size != 1:
+        return Feedback("invalid", f"{_cap(what)} should be a single number, yours has "
+                        f"shape {value.shape}.", "wrong shape")
+    value = float(value.ravel()[0])
+    expected = float(expected)
+    if math.isclose(value, expected, rel_tol=1e-3, abs_tol=atol):
+        return Feedback("correct", f"{_cap(what)} is right.")
+    found = _anticipated(np.asarray(value), mistakes, atol, np.asarray(expected))
+    if found is not None:
+        return found
+    if angle:
+        if math.isclose(math.radians(value), expected, rel_tol=1e-3, abs_tol=atol):
+            return Feedback("wrong", f"That is {what} in degrees; give it in radians "
+                            f"({fmt.number(value)}° = {fmt.number(math.radians(value))} rad).",
+                            "degrees")
+        turns = (value - expected) / (2 * math.pi)
+        if abs(turns - round(turns)) < 1e-3 and round(turns) != 0:
+            return Feedback("correct", f"{_cap(what)} is right up to a whole number of "
+                            "turns, which is the same rotation.")
+    if math.isclose(value, -expected, rel_tol=1e-3, abs_tol=atol):
+        return Feedback("wrong", "Right size, wrong sign.", "opposite sign")
+    return Feedback("wrong", f"{_cap(what)} should be different: yours is "
+                    f"{fmt.number(value, 4)}.", "value differs")
+
+
+def read_floats(value):
+    """`value` as a finite float array, or None when it cannot be read.
+
+    Placeholders, text, dicts and sets are not read; neither are ragged lists or answers with
+    NaN or infinity.
+
+    Parameters
+    ----------
+    value : object
+
+    Returns
+    -------
+    numpy.ndarray or None
+
+    Examples
+    --------
+    >>> read_floats([[1, 2], [3, 4]]).shape
+    (2, 2)
+    >>> read_floats("1, 2") is None, read_floats([1, float("nan")]) is None, read_floats(...)
+    (True, True, None)
+    """
+    if value is None or value is Ellipsis or isinstance(value, (str, bytes, dict, set)):
+        return None
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        return None
+    return arr if np.isfinite(arr).all() else None
+
+
+def diagnose_parts(answer, parts, what, form_hint, hint=""):
+    r"""Judge an answer made of several numbers, each with its own anticipated mistakes.
+
+    Parameters
+    ----------
+    answer : object
+    parts : list of (str, float, list of Mistake)
+        The name of each number, its expected value and the slips anticipated for it.
+    what : str
+        How the feedback names the whole answer.
+    form_hint : str
+        What to type, for an answer that cannot be read.
+    hint : str
+        How to get the numbers right, for wrong numbers that match no anticipated slip.
+
+    Returns
+    -------
+    Feedback
+        Correct when every number is right; otherwise the explanation of the first anticipated
+        slip found (its key is the diagnosis), followed by the list of the numbers that are right
+        and wrong.
+
+    Examples
+    --------
+    >>> parts = [("the sum", 5.0, []),
+    ...          ("the product", 6.0, [Mistake(5.0, "That is the sum.", "added")])]
+    >>> diagnose_parts([5, 6], parts, "your answer", "`[sum, product]`").status
+    'correct'
+    >>> print(diagnose_parts([5, 5], parts, "your answer", "`[sum, product]`"))
+    Not yet: *The product:* That is the sum. Right: the sum. Not yet: the product.
+    >>> diagnose_parts([5, ...], parts, "your answer", "`[sum, product]`").status
+    'unanswered'
+    """
+    if is_unanswered(answer) or (isinstance(answer, (list, tuple))
+                                 and any(is_unanswered(a) for a in answer)):
+        return Feedback("unanswered", UNANSWERED)
+    values = read_floats(answer)
+    if values is None or values.shape != (len(parts),):
+        return Feedback("invalid", f"{_cap(what)} should be {len(parts)} numbers: {form_hint}",
+                        "unreadable")
+    wrong, found = [], None
+    for value, (name, expected, mistakes) in zip(values, parts):
+        if math.isclose(value, expected, rel_tol=1e-3, abs_tol=ATOL):
+            continue
+        wrong.append(name)
+        if found is None:
+            for mistake in mistakes:
+                if _close(value, mistake.value, ATOL) and not _close(mistake.value, expected,
+                                                                     ATOL):
+                    found = (name, mistake)
+                    break
+    if not wrong:
+        return Feedback("correct", f"All {len(parts)} numbers are right.")
+    right = [name for name, _, _ in parts if name not in wrong]
+    summary = (f" Right: {', '.join(right)}." if right else "") + \
+        f" Not yet: {', '.join(wrong)}."
+    if found is not None:
+        name, mistake = found
+        return Feedback("wrong", f"*{_cap(name)}:* {mistake.explanation}" + summary,
+                        mistake.key)
+    return Feedback("wrong", f"Some of your numbers are off.{summary} {hint}".rstrip(),
+                    "value differs")
+
+
+def hinted(feedback, hint, generic):
+    """`feedback` with `hint` appended when no anticipated mistake explained a wrong answer.
+
+    Parameters
+    ----------
+    feedback : Feedback
+    hint : str or None
+        What to add (how to get the answer right); nothing is added when it is empty.
+    generic : set of str
+        The diagnoses that name no anticipated slip (such as ``"components differ"``).
+
+    Returns
+    -------
+    Feedback
+
+    Examples
+    --------
+    >>> fb = Feedback("wrong", "Not this.", "value differs")
+    >>> hinted(fb, "Divide by the length.", {"value differs"}).message
+    'Not this. Divide by the length.'
+    >>> hinted(Feedback("wrong", "Transposed.", "transposed"), "Divide.", {"value differs"}).message
+    'Transposed.'
+    """
+    if hint and feedback.status == "wrong" and feedback.diagnosis in generic:
+        return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
+    return feedback
+
+
+def close(a, b, atol=ATOL, rtol=1e-3):
+    """Whether two answers have the same shape and agree within the tolerances.
+
+    Parameters
+    ----------
+    a, b : array_like
+    atol, rtol : float
+        Absolute and relative tolerance, as for :func:`numpy.allclose`.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> close([1, 2], [1, 2.001]), close([1, 2], [1, 2.1]), close([1, 2], [1, 2, 3])
+    (True, False, False)
+    """
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and bool(np.allclose(a, b, rtol=rtol, atol=atol))
+
+
+def has_placeholder(answer, none_inside=False):
+    """True for a placeholder answer, or a list or tuple with a ``...`` in it.
+
+    Parameters
+    ----------
+    answer : object
+    none_inside : bool
+        Also count a None inside the list or tuple as a placeholder.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> has_placeholder(...), has_placeholder([1, ...]), has_placeholder([1, 2])
+    (True, True, False)
+    >>> has_placeholder([1, None]), has_placeholder([1, None], none_inside=True)
+    (False, True)
+    """
+    if is_unanswered(answer):
+        return True
+    if not isinstance(answer, (list, tuple)):
+        return False
+    inside = is_unanswered if none_inside else (lambda a: a is Ellipsis)
+    return any(inside(a) for a in answer)
+
+
+def read_names(answer, menu, form, not_listed, normalise=None):
+    """An answer that is a list of names from a menu, as a set, or a Feedback saying why not.
+
+    Parameters
+    ----------
+    answer : object
+    menu : sequence of str
+        The names that may be given (listed in the feedback on a name not in it).
+    form : str
+        What to type, for an answer that is no list of strings.
+    not_listed : str
+        What follows the quoted name that is not on the menu, up to the list of the names
+        (e.g. ``"is not on the menu. The names are:"``).
+    normalise : callable or None
+        Turns a typed name into its menu spelling; None: strip and lower-case it.
+
+    Returns
+    -------
+    set of str or Feedback
+        "unanswered" for a placeholder, "invalid" (diagnosis ``"unreadable"``) otherwise.
+
+    Examples
+    --------
+    >>> sorted(read_names(["Red ", "blue"], ("red", "blue"), "A list.", "is no colour:"))
+    ['blue', 'red']
+    >>> print(read_names(["green"], ("red", "blue"), "A list.", "is no colour:"))
+    Cannot read your answer: 'green' is no colour: `red`, `blue`.
+    >>> read_names("red", ("red",), "A list.", "is no colour:").message
+    'A list.'
+    """
+    if has_placeholder(answer):
+        return Feedback("unanswered", UNANSWERED)
+    if isinstance(answer, (str, bytes, dict)) or not isinstance(
+            answer, (list, tuple, set, frozenset, np.ndarray)):
+        return Feedback("invalid", form, "unreadable")
+    names = set()
+    for item in answer:
+        if not isinstance(item, str):
+            return Feedback("invalid", form, "unreadable")
+        name = item.strip().lower() if normalise is None else normalise(item)
+        if name not in menu:
+            return Feedback("invalid", f"{item!r} {not_listed} "
+                            + ", ".join(f"`{n}`" for n in menu) + ".", "unreadable")
+        names.add(name)
+    return names

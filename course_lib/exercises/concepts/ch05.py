@@ -1,0 +1,114 @@
+"""The concept questions of chapter 5 (see :mod:`course_lib.exercises.concepts`)."""
+from .question import _mc, _tf
+
+__all__ = ["QUESTIONS"]
+
+#: The chapter's questions, in the order the mock exam and the lessons list them.
+QUESTIONS = [
+    _mc(5, "ch05-backface-sign",
+        "A closed opaque mesh has outward normals $\\vec n$. With $\\vec v$ the vector **from "
+        "the eye to a point of a face**, when is the face a back face?",
+        ("When $\\vec v \\cdot \\vec n < 0$", "Then the normal points towards the eye: the face "
+         "is turned to the viewer (a front face). The sign is often stated the wrong way round."),
+        ("When $\\vec v \\cdot \\vec n = 1$", "The test is about the sign of the dot product, "
+         "not its size."),
+        ("When $\\vec v \\cdot \\vec n > 0$", "The normal points away from the eye, along the "
+         "line of sight: the face shows its back and is hidden by the front of the same closed "
+         "object."),
+        ("When $\\vec v \\times \\vec n = \\vec 0$", "Parallel vectors mean the face is seen "
+         "straight on or straight from behind; the cross product cannot tell which."),
+        correct=2),
+    _tf(5, "ch05-backface-enough",
+        "For a single closed convex object, back-face culling alone solves hidden-surface "
+        "removal.", True,
+        "On a convex closed object every front face is fully visible and every back face is "
+        "hidden, and no two front faces overlap on screen.",
+        "For one convex closed object it does suffice; for non-convex objects or several "
+        "objects, front faces can hide each other and a z-buffer (or similar) is needed."),
+    _tf(5, "ch05-backface-open",
+        "Back-face culling can safely be used on an open surface such as a single sheet of "
+        "paper.", False,
+        "It cannot: the back of an open surface can be seen directly (nothing of the same "
+        "object hides it), so culling would make it disappear.",
+        "Right: culling relies on the object being closed and opaque, so that the front of the "
+        "object always covers its back."),
+    _mc(5, "ch05-cohen-sutherland",
+        "In Cohen-Sutherland line clipping the end points get outcodes $c_1$ and $c_2$. What "
+        "can be concluded when $c_1 \\wedge c_2 \\ne 0$ (bitwise AND)?",
+        ("The segment lies entirely inside the window", "That is the case $c_1 \\vee c_2 = 0$: "
+         "both end points inside."),
+        ("The segment crosses the window and must be clipped", "When the AND is zero and the OR "
+         "is not, it *may* cross: it has to be clipped to find out."),
+        ("The segment lies entirely outside: reject it", "Both end points are on the outer side "
+         "of the same boundary line (plane), so the whole segment is too."),
+        ("Nothing: the outcodes must be recomputed", "The AND test is exactly the trivial "
+         "reject test; no recomputation is needed."),
+        correct=2),
+    _tf(5, "ch05-cs-or-nonzero",
+        "If the AND of the two outcodes is zero, the segment intersects the clipping window.",
+        False,
+        "Not necessarily: a segment from just above the window to just right of it can pass "
+        "outside the corner, though its end points lie outside different boundaries. Such "
+        "segments are clipped step by step and rejected later.",
+        "Right: a zero AND only rules out the trivial rejection; a segment can still pass by a "
+        "corner of the window."),
+    _mc(5, "ch05-which-clipper",
+        "Which algorithm clips a **polygon** against a convex clip region, one boundary at a "
+        "time, producing a new polygon?",
+        ("Liang-Barsky", "Liang-Barsky clips a line segment, using its parametric form and the "
+         "entering/leaving parameters."),
+        ("Cohen-Sutherland", "Cohen-Sutherland clips line segments using outcodes."),
+        ("Ray casting", "Ray casting finds the nearest surface per pixel; it does not clip."),
+        ("Sutherland-Hodgman", "It passes the polygon's vertex list through one clipper per "
+         "boundary (plane), each emitting the inside vertices and the crossing points."),
+        correct=3),
+    _mc(5, "ch05-liang-barsky",
+        "What does Liang-Barsky compute for the segment $p(t) = p_0 + t(p_1 - p_0)$, "
+        "$t \\in [0, 1]$?",
+        ("The largest entering parameter $t_E$ and the smallest leaving parameter $t_L$; the "
+         "segment is rejected when $t_E > t_L$", "Each boundary gives one inequality in $t$; the "
+         "visible part is $[t_E, t_L]$ (starting from $[0, 1]$)."),
+        ("The outcodes of the two end points", "That is Cohen-Sutherland."),
+        ("The smallest entering and the largest leaving parameter", "The other way round: the "
+         "segment is inside only after it has entered through *all* boundaries (largest entry) "
+         "and before it leaves through *any* (smallest exit)."),
+        ("The intersection of the segment with each polygon edge", "That is closer to "
+         "Sutherland-Hodgman's per-edge work; Liang-Barsky clips against an axis-aligned box."),
+        correct=0),
+    _tf(5, "ch05-occlusion-conservative",
+        "Occlusion culling is conservative: it may keep primitives that turn out hidden, but it "
+        "never removes a visible one.", True,
+        "Culling only discards what is certainly hidden; whatever it leaves is resolved by the "
+        "z-buffer, so an extra primitive costs time but never a wrong picture.",
+        "It must be conservative: removing a visible primitive would leave a hole in the image, "
+        "while keeping a hidden one only costs time."),
+    _mc(5, "ch05-zbuffer",
+        "Which statement about the z-buffer algorithm is right?",
+        ("It needs the polygons sorted by depth", "It does not: each pixel keeps the nearest "
+         "depth so far, so polygons can come in any order."),
+        ("Its cost grows with the number of primitives and pixels covered, and it needs one "
+         "depth value of memory per pixel", "It processes each primitive once, compares depth "
+         "per covered pixel, and stores a depth buffer next to the colour buffer."),
+        ("It handles transparent surfaces correctly in any order", "It keeps one surface per "
+         "pixel; transparency needs sorting or special techniques."),
+        ("It works in object space with exact precision", "It works in image space, with a "
+         "depth resolution limited by the buffer's bits (z-fighting)."),
+        correct=1),
+    _mc(5, "ch05-raycasting-cost",
+        "Brute-force ray casting for hidden-surface elimination tests every pixel's ray against "
+        "every primitive. With $p$ pixels and $P$ primitives its cost is:",
+        ("$O(p + P)$", "Every ray meets every primitive: the costs multiply, they do not add."),
+        ("$O(p \\log P)$", "That needs an acceleration structure (a BVH, a grid) which brute "
+         "force does not have."),
+        ("$O(pP)$", "One intersection test per pixel and primitive; it is, however, trivially "
+         "parallel across pixels."),
+        ("$O(P^2)$", "Primitives are not tested against each other."),
+        correct=2),
+    _tf(5, "ch05-painter-cycles",
+        "The painter's algorithm (draw back to front) can fail for polygons that overlap each "
+        "other cyclically.", True,
+        "Three polygons can each lie partly in front of the next; no drawing order is right, "
+        "and polygons must be split (as a BSP tree does).",
+        "It can fail: cyclic overlap has no valid back-to-front order, so polygons must be "
+        "split first."),
+]

@@ -1,0 +1,84 @@
+"""The concept questions of chapter 18 (see :mod:`course_lib.exercises.concepts`)."""
+from .question import _mc, _tf
+
+__all__ = ["QUESTIONS"]
+
+#: The chapter's questions, in the order the mock exam and the lessons list them.
+QUESTIONS = [
+    _mc(18, "ch18-ms-ambiguous",
+        "How many of the 16 marching-squares cases are ambiguous?",
+        ("None", "The saddle cases are ambiguous."),
+        ("Four", "Only the two checkerboard patterns are ambiguous."),
+        ("Eight", "Most cases have a single way to connect the crossings."),
+        ("Two: the diagonal cases, where opposite corners are inside", "Both the 'joined' and "
+         "the 'separated' pair of segments are consistent with the corner signs; the cell "
+         "average (or the asymptotic decider) chooses."),
+        correct=3),
+    _mc(18, "ch18-mc-cases",
+        "Marching cubes has $2^8 = 256$ corner configurations. Using rotations and swapping "
+        "inside with outside, how many distinct cases remain?",
+        ("8", "Far too few: the cases differ in how many and which corners are inside."),
+        ("256", "Symmetry collapses most of them."),
+        ("15", "The classic table of 15 base cases (including the empty one) generates all "
+         "256."),
+        ("23", "That is the count with rotations only, without complementation."),
+        correct=2),
+    _tf(18, "ch18-mc-holes",
+        "The original marching-cubes table can produce holes in the surface, because "
+        "neighbouring cubes may resolve an ambiguous shared face differently.", True,
+        "On a face with a saddle pattern the two cubes must agree on the connection; the "
+        "asymptotic decider or extended tables fix this.",
+        "It can: this is the known face-ambiguity problem of marching cubes."),
+    _tf(18, "ch18-streamline-tangent",
+        "A streamline is everywhere tangent to the velocity field at one instant.", True,
+        "That is its definition; in a steady flow streamlines, pathlines and streaklines "
+        "coincide.",
+        "It is the definition of a streamline."),
+    _tf(18, "ch18-streamlines-cross",
+        "Two different streamlines of a steady, smooth vector field can cross at a point where "
+        "the velocity is non-zero.", False,
+        "They cannot: at such a point the field has one direction, and the solution through it "
+        "is unique. Streamlines only meet at critical points (zero velocity).",
+        "Right: uniqueness of solutions forbids crossings away from critical points."),
+    _mc(18, "ch18-euler-integration",
+        "Streamlines of a pure rotation $v = (-y, x)$ are circles. What does explicit Euler "
+        "integration produce?",
+        ("Exact circles", "Euler steps along the tangent leave the circle at every step."),
+        ("An inward spiral", "Each tangent step moves *outward*: $|p + h v|^2 = (1 + h^2)|p|^2$."),
+        ("An outward spiral: the radius grows by $\\sqrt{1 + h^2}$ per step",
+         "A first-order method drifts; Runge-Kutta 4 is far more accurate for the same step."),
+        ("A straight line", "It turns, though not enough."),
+        correct=2),
+    _mc(18, "ch18-front-to-back",
+        "Why composite volume samples front to back in ray casting?",
+        ("It allows early ray termination: stop once the accumulated opacity is close to 1",
+         "Samples behind an almost opaque layer cannot change the pixel."),
+        ("It gives a different (more correct) image than back to front", "Both orders give "
+         "the same result, with the matching formulas."),
+        ("It avoids the transfer function", "The transfer function is still needed to classify "
+         "samples."),
+        ("It makes the volume transparent", "Opacity comes from the transfer function."),
+        correct=0),
+    _tf(18, "ch18-isosurface-vs-dvr",
+        "Direct volume rendering needs an intermediate polygonal surface, as marching cubes "
+        "does.", False,
+        "It does not: it casts rays through the volume and composites the colours and "
+        "opacities of the samples; marching cubes extracts a surface.",
+        "Right: direct volume rendering works on the samples, without polygons."),
+    _mc(18, "ch18-ms-interp",
+        "Where does marching squares put the isoline's crossing on a cell edge with corner "
+        "values $f_0$ and $f_1$?",
+        ("At the edge midpoint, always", "That is the cheap variant; it gives jagged lines."),
+        ("At $t = \\frac{c - f_0}{f_1 - f_0}$ from the first corner (linear interpolation)",
+         "Where the linear interpolation of the corner values equals the isovalue $c$."),
+        ("At the corner with the larger value", "The crossing lies between the corners."),
+        ("At $t = \\frac{f_1 - c}{f_1 - f_0}$", "Measured from the first corner this is "
+         "$1 - t$: the crossing lands mirrored."),
+        correct=1),
+    _tf(18, "ch18-glyph-clutter",
+        "Arrow glyphs drawn at every grid point of a dense vector field give the clearest "
+        "picture.", False,
+        "Dense glyphs overlap and clutter the view; subsample, or use streamlines or texture "
+        "methods (LIC) for dense fields.",
+        "Right: glyphs must be spaced out; otherwise they clutter."),
+]
