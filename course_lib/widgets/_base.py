@@ -102,8 +102,9 @@ def figure_3d(radius, title, size=4.3):
 
 
 def slider(description, value, low, high, step, on_change=None, *, kind=None,
-           label_width="80px", width="300px", **options):
-    """A slider that follows the mouse (``continuous_update``), labelled `description`.
+           label_width="80px", width="300px", continuous_update=True, **options):
+    """A slider labelled `description` that follows the mouse (unless `continuous_update` is
+    False: then it reports its value when released).
 
     The one slider factory of the explorers: `kind` is the ipywidgets class (default
     ``FloatSlider``; ``IntSlider`` etc.), the description is `label_width` wide and the whole
@@ -122,7 +123,8 @@ def slider(description, value, low, high, step, on_change=None, *, kind=None,
     import ipywidgets as w
 
     control = (kind or w.FloatSlider)(value=value, min=low, max=high, step=step,
-                                      description=description, continuous_update=True,
+                                      description=description,
+                                      continuous_update=continuous_update,
                                       style={"description_width": label_width},
                                       layout=w.Layout(width=width), **options)
     if on_change is not None:
