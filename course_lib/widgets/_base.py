@@ -11,7 +11,7 @@ import numpy as np
 from .. import draw
 
 __all__ = ["Explorer", "beside", "bind", "degree_sliders", "figure_3d",
-           "handle_comms_on_main_thread", "read_controls", "slider"]
+           "handle_comms_on_main_thread", "labelled", "read_controls", "slider"]
 
 _COMM_MESSAGES = ("comm_open", "comm_msg", "comm_close")
 
@@ -101,6 +101,23 @@ def figure_3d(radius, title, size=4.3):
     return fig, ax
 
 
+def labelled(kind, description, label_width="80px", width="300px", **options):
+    """A control of ipywidgets class `kind` labelled `description`: the label `label_width`
+    wide, the whole control `width` wide; further `options` go to the class.
+
+    Examples
+    --------
+    >>> import ipywidgets as w
+    >>> menu = labelled(w.Dropdown, "mapping", options=["planar", "sphere"], width="260px")
+    >>> menu.value, menu.style.description_width, menu.layout.width
+    ('planar', '80px', '260px')
+    """
+    import ipywidgets as w
+
+    return kind(description=description, style={"description_width": label_width},
+                layout=w.Layout(width=width), **options)
+
+
 def slider(description, value, low, high, step, on_change=None, *, kind=None,
            label_width="80px", width="300px", continuous_update=True, **options):
     """A slider labelled `description` that follows the mouse (unless `continuous_update` is
@@ -108,8 +125,8 @@ def slider(description, value, low, high, step, on_change=None, *, kind=None,
 
     The one slider factory of the explorers: `kind` is the ipywidgets class (default
     ``FloatSlider``; ``IntSlider`` etc.), the description is `label_width` wide and the whole
-    slider `width`; further `options` go to the class. With `on_change`, the slider calls it
-    when its value moves.
+    slider `width` (:func:`labelled`); further `options` go to the class. With `on_change`,
+    the slider calls it when its value moves.
 
     Examples
     --------
@@ -122,11 +139,9 @@ def slider(description, value, low, high, step, on_change=None, *, kind=None,
     """
     import ipywidgets as w
 
-    control = (kind or w.FloatSlider)(value=value, min=low, max=high, step=step,
-                                      description=description,
-                                      continuous_update=continuous_update,
-                                      style={"description_width": label_width},
-                                      layout=w.Layout(width=width), **options)
+    control = labelled(kind or w.FloatSlider, description, label_width, width, value=value,
+                       min=low, max=high, step=step, continuous_update=continuous_update,
+                       **options)
     if on_change is not None:
         control.observe(on_change, names="value")
     return control

@@ -22,7 +22,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, shading
-from ._base import Explorer, bind
+from ._base import Explorer, bind, slider
 
 __all__ = ["KINDS", "MAX_SAMPLES", "OcclusionExplorer", "State", "convergence", "exact",
            "floor_points", "occluders", "ray_visibility", "scene"]
@@ -312,15 +312,12 @@ class OcclusionExplorer(Explorer):
                                                self.err_title, self.se_line, self.rms_line,
                                                self.marker,
                                                *[a for pair in self.outlines for a in pair]])
-        self.samples = w.IntSlider(value=self.state.samples, min=1, max=MAX_SAMPLES,
-                                   description="rays k", continuous_update=True,
-                                   style={"description_width": "60px"},
-                                   layout=w.Layout(width="420px"))
+        self.samples = slider("rays k", self.state.samples, 1, MAX_SAMPLES, 1, kind=w.IntSlider,
+                              label_width="60px", width="420px")
         self.kind = w.ToggleButtons(options=KINDS, value=self.state.kind,
                                     style={"button_width": "110px"})
-        self.seed = w.IntSlider(value=self.state.seed, min=0, max=9, description="seed",
-                                continuous_update=False, style={"description_width": "60px"},
-                                layout=w.Layout(width="250px"))
+        self.seed = slider("seed", self.state.seed, 0, 9, 1, kind=w.IntSlider, label_width="60px",
+                           width="250px", continuous_update=False)
         bind(self.state, {"samples": self.samples, "kind": self.kind, "seed": self.seed},
              self.update)
         self.info = w.HTML(layout=w.Layout(width="760px"))

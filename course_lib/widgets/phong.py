@@ -23,7 +23,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, shading, viewing, visibility
-from ._base import Explorer, bind, degree_sliders, slider
+from ._base import Explorer, bind, degree_sliders, labelled, slider
 
 __all__ = ["MODELS", "PhongExplorer", "State", "interpolation_buffers", "light_direction",
            "scene", "sphere_normals"]
@@ -336,20 +336,14 @@ class PhongExplorer(Explorer):
         self.ka = slider("k_a ambient", st.ka, 0, 1, 0.01)
         self.kd = slider("k_d diffuse", st.kd, 0, 1, 0.01)
         self.ks = slider("k_s specular", st.ks, 0, 1, 0.01)
-        self.shininess = w.FloatLogSlider(value=st.shininess, base=2, min=0, max=9,
-                                          step=0.1, description="shininess n",
-                                          style={"description_width": "80px"},
-                                          layout=w.Layout(width="300px"))
+        self.shininess = labelled(w.FloatLogSlider, "shininess n", value=st.shininess, base=2,
+                                  min=0, max=9, step=0.1)
         self.emission = slider("emission", st.emission, 0, 1, 0.01)
         sliders = degree_sliders(None, azimuth=("light az. °", st.light_azimuth, -180, 180),
                                  elevation=("light el. °", st.light_elevation, -89, 89))
         self.azimuth, self.elevation = sliders["azimuth"], sliders["elevation"]
-        self.light_color = w.ColorPicker(value=st.light_color, description="light",
-                                         concise=False, layout=w.Layout(width="300px"),
-                                         style={"description_width": "80px"})
-        self.color = w.ColorPicker(value=st.color, description="object",
-                                   layout=w.Layout(width="300px"),
-                                   style={"description_width": "80px"})
+        self.light_color = labelled(w.ColorPicker, "light", value=st.light_color, concise=False)
+        self.color = labelled(w.ColorPicker, "object", value=st.color)
         self.model = w.ToggleButtons(options=MODELS, value=st.model,
                                      style={"button_width": "110px"})
         self.segments = slider("mesh segments", st.segments, 4, 32, 2, kind=w.IntSlider,

@@ -29,7 +29,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, texturing
-from ._base import Explorer, read_controls, slider
+from ._base import Explorer, labelled, read_controls, slider
 
 __all__ = ["MAPPINGS", "SIZES", "State", "TEXTURES", "TextureExplorer", "compendium_map",
            "filtering", "mesh_grid", "scene", "texture_image", "texture_uv"]
@@ -454,20 +454,17 @@ class TextureExplorer(Explorer):
 
         st, options = self.state, {"label_width": "70px", "width": "300px"}
         self._busy = False
-        self.texture = w.Dropdown(options=TEXTURES, value=st.texture,
-                                  description="texture", style={"description_width": "70px"},
-                                  layout=w.Layout(width="300px"))
+        self.texture = labelled(w.Dropdown, "texture", options=TEXTURES, value=st.texture,
+                                **options)
         self.texture.observe(self._on_texture, names="value")
         self.frequency = slider("frequency", st.frequency, 1, 32, 1, **options)
         self.strength = slider("turbulence", st.strength, 0, 8, 0.1, **options)
-        self.size = w.SelectionSlider(options=SIZES, value=st.size,
-                                      description="texels", style={"description_width": "70px"},
-                                      layout=w.Layout(width="300px"))
+        self.size = labelled(w.SelectionSlider, "texels", options=SIZES, value=st.size,
+                             **options)
         self.sampling = w.ToggleButtons(options=SAMPLINGS, value=st.sampling,
                                         style={"button_width": "90px"})
-        self.mapping = w.Dropdown(options=MAPPINGS, value=st.mapping, description="mapping",
-                                  style={"description_width": "70px"},
-                                  layout=w.Layout(width="300px"))
+        self.mapping = labelled(w.Dropdown, "mapping", options=MAPPINGS, value=st.mapping,
+                                **options)
         self.azimuth = slider("view az. °", st.azimuth, -180, 180, 2, **options)
         self.elevation = slider("view el. °", st.elevation, -80, 80, 2, **options)
         #: field of ``State`` -> its control (the texture menu also resets two sliders)
