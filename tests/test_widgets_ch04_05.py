@@ -4,27 +4,13 @@ from pyglm import glm
 import numpy as np
 import pytest
 import shapely
-from matplotlib.backend_bases import MouseEvent
 
 from course_lib.widgets import (camera, clipping3d, cohen_sutherland, liang_barsky,
                                 sutherland_hodgman)
 from course_lib.widgets._clip2d import BOX_MAX, BOX_MIN
+from widget_harness import drag, mouse
 
 BOX = shapely.box(*BOX_MIN, *BOX_MAX)
-
-
-def mouse(ax, kind, xy, button=1):
-    """Send a real matplotlib mouse event at data position `xy`, as a student's mouse does."""
-    x, y = ax.transData.transform(xy)
-    event = MouseEvent(kind, ax.figure.canvas, x, y, button=button)
-    ax.figure.canvas.callbacks.process(kind, event)
-
-
-def drag(ax, start, end, steps=4):
-    mouse(ax, "button_press_event", start)
-    for t in np.linspace(0, 1, steps + 1)[1:]:
-        mouse(ax, "motion_notify_event", (1 - t) * np.asarray(start) + t * np.asarray(end))
-    mouse(ax, "button_release_event", end)
 
 
 def shapely_segment(p0, p1):

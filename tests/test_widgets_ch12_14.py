@@ -4,24 +4,10 @@ cylindrical angles, the exact ambient occlusion of a floor by a wall) and their 
 toggles, real mouse events for dragging)."""
 import numpy as np
 import pytest
-from matplotlib.backend_bases import MouseEvent
 
 from course_lib import shading, texturing, viewing
 from course_lib.widgets import barycentric, occlusion, phong, texture
-
-
-def mouse(ax, kind, xy, button=1):
-    """Send a real matplotlib mouse event at data position `xy`, as a student's mouse does."""
-    x, y = ax.transData.transform(xy)
-    event = MouseEvent(kind, ax.figure.canvas, x, y, button=button)
-    ax.figure.canvas.callbacks.process(kind, event)
-
-
-def drag(ax, start, end, steps=4):
-    mouse(ax, "button_press_event", start)
-    for t in np.linspace(0, 1, steps + 1)[1:]:
-        mouse(ax, "motion_notify_event", (1 - t) * np.asarray(start) + t * np.asarray(end))
-    mouse(ax, "button_release_event", end)
+from widget_harness import drag
 
 
 def hex_rgb(text):

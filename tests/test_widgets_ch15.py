@@ -4,9 +4,9 @@ rays aim at the light and are blocked exactly when a sphere lies in the way (own
 the explorer's camera orbit, its shadows and its materials against own ray-sphere tests."""
 import numpy as np
 import pytest
-from matplotlib.backend_bases import MouseEvent
 
 from course_lib.widgets import ray_tree, raytracer
+from widget_harness import click
 
 
 def segment_hits_sphere(p, q, center, radius, margin=0.0):
@@ -150,9 +150,7 @@ def test_tree_counts_and_weights():
 def test_click_picks_the_pixel():
     ex = ray_tree.RayTreeExplorer()
     ex.fig.canvas.draw()
-    x, y = ex.ax_image.transData.transform((20.5, 33.5))
-    event = MouseEvent("button_press_event", ex.fig.canvas, x, y, button=1)
-    ex.fig.canvas.callbacks.process("button_press_event", event)
+    click(ex.ax_image, (20.5, 33.5))
     assert (ex.row.value, ex.column.value) == (33, 20)
     assert (ex.state.row, ex.state.column) == (33, 20)
     o, d = ray_tree.example("spheres").camera.pixel_ray(33, 20)

@@ -10,7 +10,8 @@ import numpy as np
 
 from .. import draw
 
-__all__ = ["Explorer", "beside", "degree_sliders", "figure_3d", "handle_comms_on_main_thread"]
+__all__ = ["Explorer", "beside", "bind", "degree_sliders", "figure_3d",
+           "handle_comms_on_main_thread", "labelled", "read_controls", "slider"]
 
 _COMM_MESSAGES = ("comm_open", "comm_msg", "comm_close")
 
@@ -100,6 +101,52 @@ def figure_3d(radius, title, size=4.3):
     return fig, ax
 
 
+def labelled(kind, description, label_width="80px", width="300px", **options):
+    """A control of ipywidgets class `kind` labelled `description`: the label `label_width`
+    wide, the whole control `width` wide; further `options` go to the class.
+
+    Examples
+    --------
+    >>> import ipywidgets as w
+    >>> menu = labelled(w.Dropdown, "mapping", options=["planar", "sphere"], width="260px")
+    >>> menu.value, menu.style.description_width, menu.layout.width
+    ('planar', '80px', '260px')
+    """
+    import ipywidgets as w
+
+    return kind(description=description, style={"description_width": label_width},
+                layout=w.Layout(width=width), **options)
+
+
+def slider(description, value, low, high, step, on_change=None, *, kind=None,
+           label_width="80px", width="300px", continuous_update=True, **options):
+    """A slider labelled `description` that follows the mouse (unless `continuous_update` is
+    False: then it reports its value when released).
+
+    The one slider factory of the explorers: `kind` is the ipywidgets class (default
+    ``FloatSlider``; ``IntSlider`` etc.), the description is `label_width` wide and the whole
+    slider `width` (:func:`labelled`); further `options` go to the class. With `on_change`,
+    the slider calls it when its value moves.
+
+    Examples
+    --------
+    >>> s = slider("k_a ambient", 0.2, 0, 1, 0.01)
+    >>> type(s).__name__, s.value, s.max, s.step, s.style.description_width, s.layout.width
+    ('FloatSlider', 0.2, 1.0, 0.01, '80px', '300px')
+    >>> import ipywidgets as w
+    >>> slider("depth", 2, 0, 6, 1, kind=w.IntSlider, width="340px").value
+    2
+    """
+    import ipywidgets as w
+
+    control = labelled(kind or w.FloatSlider, description, label_width, width, value=value,
+                       min=low, max=high, step=step, continuous_update=continuous_update,
+                       **options)
+    if on_change is not None:
+        control.observe(on_change, names="value")
+    return control
+
+
 def degree_sliders(on_change, label_width="80px", **specs):
     """Sliders in whole degrees, ``name=(description, value, min, max)``, each calling
     `on_change` when moved; returned in a dict by name.
@@ -110,16 +157,49 @@ def degree_sliders(on_change, label_width="80px", **specs):
     >>> sliders["yaw"].value, sliders["yaw"].step
     (30.0, 1.0)
     """
-    import ipywidgets as w
+    return {name: slider(description, value, low, high, 1, on_change, label_width=label_width,
+                         width="330px")
+            for name, (description, value, low, high) in specs.items()}
 
-    sliders = {}
-    for name, (description, value, low, high) in specs.items():
-        slider = w.FloatSlider(value=value, min=low, max=high, step=1, description=description,
-                               continuous_update=True, style={"description_width": label_width},
-                               layout=w.Layout(width="330px"))
-        slider.observe(on_change, names="value")
-        sliders[name] = slider
-    return sliders
+
+def read_controls(state, controls):
+    """Copy each control's value into its field of `state`: ``controls`` maps field -> control.
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace
+    >>> state = SimpleNamespace(t=0.0)
+    >>> read_controls(state, {"t": slider("t", 0.5, 0, 1, 0.1)})
+    >>> state.t
+    0.5
+    """
+    for name, control in controls.items():
+        setattr(state, name, control.value)
+
+
+def bind(state, controls, then):
+    """Bind controls to the fields of `state`: when any of them moves, every field is read
+    from its control (:func:`read_controls`) and ``then()`` runs (usually the explorer's
+    ``update``).
+
+    `controls` maps a field of `state` to the control that sets it. Returns the handler the
+    controls call (``handler(change)``), e.g. to call it by hand or to observe more controls.
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace
+    >>> state = SimpleNamespace(a=1.0, b=2.0)
+    >>> controls = {"a": slider("a", 1, 0, 5, 1), "b": slider("b", 2, 0, 5, 1)}
+    >>> _ = bind(state, controls, lambda: print("update", state.a, state.b))
+    >>> controls["b"].value = 4
+    update 1.0 4.0
+    """
+    def on_change(change=None):
+        read_controls(state, controls)
+        then()
+    for control in controls.values():
+        control.observe(on_change, names="value")
+    return on_change
 
 
 def beside(canvas, controls):

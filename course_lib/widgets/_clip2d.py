@@ -1,7 +1,10 @@
-"""What the 2D clipping visualizers share: the clip window, its figure, the step controls."""
+"""What the 2D clipping visualizers share: the clip window, its figure, the step controls, and
+:class:`StepExplorer`, their wiring (drag the input, step through the algorithm)."""
 import numpy as np
 
 from .. import clipping, draw
+from ._base import Explorer
+from ._drag import DraggablePoints
 
 BOX_MIN = np.array([-1.0, -1.0])
 BOX_MAX = np.array([1.5, 1.0])
@@ -59,3 +62,66 @@ def set_step_count(slider, count):
     with slider.hold_sync():                  # the browser gets the new range and value at once
         slider.max = max(count - 1, 0)
         slider.value = value
+
+
+class StepExplorer(Explorer):
+    """Base of the step-by-step clipping visualizers: the student drags the input's points and
+    steps through the algorithm with a slider and back/forward buttons, next to the pseudocode.
+
+    A subclass draws its figure and artists (``self.fig``, ``self.blitter``), then calls
+    :meth:`_wire`, and defines what differs: :meth:`_scene` (its module's ``scene``),
+    :meth:`_step_count`, :meth:`_draw`, and, if its points are not ``p0`` and ``p1`` of the
+    state, :meth:`_move`.
+
+    Examples
+    --------
+    >>> from course_lib.widgets.cohen_sutherland import CohenSutherlandExplorer
+    >>> explorer = CohenSutherlandExplorer()
+    >>> isinstance(explorer, StepExplorer), explorer.step.value == explorer.step.max
+    (True, True)
+    """
+
+    def _wire(self, ax, points, info_width):
+        """Make `points` of `ax` draggable, add the step controls (at the last step) and the
+        pseudocode panel `info_width` wide, build ``self.widget`` and draw the scene."""
+        import ipywidgets as w
+
+        self.drag = DraggablePoints(ax, points, self._on_drag)
+        count = self._step_count()
+        self.step, controls = step_controls(self._on_step, count)
+        self.step.value = self.state.step = count - 1
+        self.info = w.HTML(layout=w.Layout(width=info_width))
+        self.widget = w.HBox([self.fig.canvas, w.VBox([controls, self.info])],
+                             layout=w.Layout(flex_flow="row wrap"))
+        self._draw(self._scene())
+
+    def _scene(self):  # pragma: no cover - every subclass overrides it
+        """The pure scene of the current state."""
+        raise NotImplementedError
+
+    def _step_count(self):  # pragma: no cover - every subclass overrides it
+        """How many steps the step slider offers for the current state."""
+        raise NotImplementedError
+
+    def _draw(self, s):  # pragma: no cover - every subclass overrides it
+        """Move the drawn artists to scene `s` and show its text."""
+        raise NotImplementedError
+
+    def _move(self, index, xy):
+        """Point `index` was dragged to `xy`: store it in the state (end point p0 or p1)."""
+        setattr(self.state, f"p{index}", xy)
+
+    def _on_drag(self, index, xy):
+        self._move(index, xy)
+        set_step_count(self.step, self._step_count())
+        self.state.step = self.step.value
+        self.update()
+
+    def _on_step(self, change):
+        self.state.step = change["new"]
+        self.update()
+
+    def update(self):
+        """Recompute the scene and move the drawn artists."""
+        self._draw(self._scene())
+        self.blitter.update()

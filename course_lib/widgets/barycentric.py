@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import draw, texturing
-from ._base import Explorer
+from ._base import Explorer, bind
 from ._drag import DraggablePoints
 
 __all__ = ["BarycentricExplorer", "COLORS", "State", "scene", "signed_area"]
@@ -215,7 +215,7 @@ class BarycentricExplorer(Explorer):
                                     self._on_drag)
         self.mode = w.ToggleButtons(options=MODES, value=self.state.mode,
                                     description="show", style={"button_width": "80px"})
-        self.mode.observe(self._on_mode, names="value")
+        bind(self.state, {"mode": self.mode}, self.update)
         self.info = w.HTML(layout=w.Layout(width="700px"))
         self.widget = w.VBox([self.fig.canvas, self.mode, self.info])
         self._draw(s)
@@ -224,10 +224,6 @@ class BarycentricExplorer(Explorer):
         points = self.drag.points
         self.state.triangle = points[:3].copy()
         self.state.point = points[3].copy()
-        self.update()
-
-    def _on_mode(self, change):
-        self.state.mode = change["new"]
         self.update()
 
     def update(self):

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import curves, draw, format as fmt
-from ._base import Explorer
+from ._base import Explorer, bind
 from ._drag import DraggablePoints
 
 __all__ = ["BezierExplorer", "MAX_POINTS", "State", "convex_hull", "scene"]
@@ -156,7 +156,6 @@ class BezierExplorer(Explorer):
                                     on_release=self.update)
         self.t = w.FloatSlider(value=self.state.t, min=0, max=1, step=0.01, description="t",
                                continuous_update=True, layout=w.Layout(width="300px"))
-        self.t.observe(self._on_t, names="value")
         buttons = []
         for label, action in (("add point", self.add_point), ("remove point", self.remove_point),
                               ("subdivide at t", self.subdivide),
@@ -167,8 +166,8 @@ class BezierExplorer(Explorer):
         self.hull_box = w.Checkbox(value=self.state.show_hull, description="convex hull")
         self.construction_box = w.Checkbox(value=self.state.show_construction,
                                            description="de Casteljau")
-        for box in (self.hull_box, self.construction_box):
-            box.observe(self._on_toggle, names="value")
+        bind(self.state, {"t": self.t, "show_hull": self.hull_box,
+                          "show_construction": self.construction_box}, self.update)
         self.info = w.HTML(layout=w.Layout(width="330px"))
         controls = w.VBox([self.t, w.HBox(buttons[:2]), w.HBox(buttons[2:]),
                            w.HBox([self.hull_box, self.construction_box]), self.info])
@@ -213,15 +212,6 @@ class BezierExplorer(Explorer):
     def _on_drag(self, index, xy):
         self.state.points = self.drag.points.copy()
         self._split = None
-        self.update()
-
-    def _on_t(self, change):
-        self.state.t = change["new"]
-        self.update()
-
-    def _on_toggle(self, change):
-        self.state.show_hull = self.hull_box.value
-        self.state.show_construction = self.construction_box.value
         self.update()
 
     def update(self):

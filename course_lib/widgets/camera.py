@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import clipping, draw, format as fmt, shapes, transforms, viewing
-from ._base import Explorer
+from ._base import Explorer, bind, slider
 
 __all__ = ["CameraExplorer", "PROJECTIONS", "State", "camera_matrices", "scene", "world"]
 
@@ -254,31 +254,13 @@ class CameraExplorer(Explorer):
         self.blitter = draw.Blitter(self.fig, [self.eye_point, *self.ecs_axes, self.volume,
                                                self.grid_lines, self.image_faces, self.message])
 
-        def slider(name, description, low, high, step=0.1):
-            control = w.FloatSlider(value=getattr(self.state, name), min=low, max=high,
-                                    step=step, description=description, continuous_update=True,
-                                    style={"description_width": "70px"},
-                                    layout=w.Layout(width="260px"))
-            control.observe(self._on_change, names="value")
-            return control
-
-        self.controls = {
-            "eye_x": slider("eye_x", "eye x", -8, 8), "eye_y": slider("eye_y", "eye y", -8, 8),
-            "eye_z": slider("eye_z", "eye z", -2, 8),
-            "azimuth_deg": slider("azimuth_deg", "gaze azim. °", -180, 180, 1),
-            "elevation_deg": slider("elevation_deg", "gaze elev. °", -89, 89, 1),
-            "up_x": slider("up_x", "up x", -1, 1), "up_y": slider("up_y", "up y", -1, 1),
-            "up_z": slider("up_z", "up z", -1, 1),
-            "fov_deg": slider("fov_deg", "fov °", 10, 120, 1),
-            "half_size": slider("half_size", "half size", 0.5, 6),
-            "near": slider("near", "near", 0.1, 6), "far": slider("far", "far", 1, 25),
-            "oblique_deg": slider("oblique_deg", "oblique φ °", 0, 90, 1),
-            "oblique_scale": slider("oblique_scale", "oblique k", 0, 1, 0.05),
-        }
+        self.controls = {name: slider(description, getattr(self.state, name), low, high, step,
+                                      label_width="70px", width="260px")
+                         for name, (description, low, high, step) in self.SLIDERS.items()}
         projection = w.ToggleButtons(options=PROJECTIONS, value=self.state.projection,
                                      style={"button_width": "95px"})
-        projection.observe(self._on_change, names="value")
         self.controls["projection"] = projection
+        bind(self.state, self.controls, self._on_change)
         c = self.controls
         columns = w.HBox([
             w.VBox([w.HTML("<b>eye</b>"), c["eye_x"], c["eye_y"], c["eye_z"],
@@ -293,6 +275,18 @@ class CameraExplorer(Explorer):
         self._enable_projection_controls()
         self._draw(s)
 
+    #: The sliders, field of ``State`` -> (description, min, max, step).
+    SLIDERS = {"eye_x": ("eye x", -8, 8, 0.1), "eye_y": ("eye y", -8, 8, 0.1),
+               "eye_z": ("eye z", -2, 8, 0.1),
+               "azimuth_deg": ("gaze azim. °", -180, 180, 1),
+               "elevation_deg": ("gaze elev. °", -89, 89, 1),
+               "up_x": ("up x", -1, 1, 0.1), "up_y": ("up y", -1, 1, 0.1),
+               "up_z": ("up z", -1, 1, 0.1),
+               "fov_deg": ("fov °", 10, 120, 1), "half_size": ("half size", 0.5, 6, 0.1),
+               "near": ("near", 0.1, 6, 0.1), "far": ("far", 1, 25, 0.1),
+               "oblique_deg": ("oblique φ °", 0, 90, 1),
+               "oblique_scale": ("oblique k", 0, 1, 0.05)}
+
     #: The sliders each projection reads (the others are greyed out: moving them would do
     #: nothing to the picture).
     PROJECTION_CONTROLS = {"perspective": ("fov_deg",),
@@ -304,9 +298,7 @@ class CameraExplorer(Explorer):
         for name in set().union(*self.PROJECTION_CONTROLS.values()):
             self.controls[name].disabled = name not in used
 
-    def _on_change(self, change):
-        for name, control in self.controls.items():
-            setattr(self.state, name, control.value)
+    def _on_change(self):
         self._enable_projection_controls()
         self.update()
 

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import clipping, draw, format as fmt, transforms, viewing
-from ._base import Explorer, beside, degree_sliders, figure_3d
+from ._base import Explorer, beside, bind, degree_sliders, figure_3d, slider
 
 __all__ = ["ClippingExplorer3D", "REGIONS", "State", "region_planes", "scene"]
 
@@ -136,26 +136,17 @@ class ClippingExplorer3D(Explorer):
                                     facecolors=(0.95, 0.55, 0.1, 0.8), edgecolor="#a04000")
         self.blitter = draw.Blitter(self.fig, [self.edges, self.triangle, self.polygon,
                                                self.segment, self.kept])
-        sliders = degree_sliders(self._on_change, turn=("turn °", self.state.turn_deg, -180, 180),
+        sliders = degree_sliders(None, turn=("turn °", self.state.turn_deg, -180, 180),
                                  tilt=("tilt °", self.state.tilt_deg, -90, 90))
         self.turn, self.tilt = sliders.values()
-        self.lift = w.FloatSlider(value=self.state.lift, min=-2.5, max=2.5, step=0.05,
-                                  description="lift", continuous_update=True,
-                                  style={"description_width": "80px"},
-                                  layout=w.Layout(width="330px"))
-        self.lift.observe(self._on_change, names="value")
+        self.lift = slider("lift", self.state.lift, -2.5, 2.5, 0.05, width="330px")
         self.region = w.ToggleButtons(options=REGIONS, value=self.state.region)
-        self.region.observe(self._on_change, names="value")
+        bind(self.state, {"region": self.region, "turn_deg": self.turn, "tilt_deg": self.tilt,
+                          "lift": self.lift}, self.update)
         self.info = w.HTML(layout=w.Layout(width="340px"))
         self.widget = beside(self.fig.canvas, w.VBox([self.region, self.turn, self.tilt,
                                                       self.lift, self.info]))
         self._draw(s)
-
-    def _on_change(self, change):
-        self.state.region = self.region.value
-        self.state.turn_deg, self.state.tilt_deg = self.turn.value, self.tilt.value
-        self.state.lift = self.lift.value
-        self.update()
 
     def update(self):
         """Recompute the scene and move the drawn artists."""

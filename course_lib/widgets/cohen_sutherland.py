@@ -5,9 +5,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import clipping, draw, format as fmt
-from ._base import Explorer
-from ._clip2d import BOX_MAX, BOX_MIN, set_step_count, step_controls, window_figure
-from ._drag import DraggablePoints, pseudocode_html
+from ._clip2d import BOX_MAX, BOX_MIN, StepExplorer, window_figure
+from ._drag import pseudocode_html
 
 __all__ = ["CohenSutherlandExplorer", "PSEUDOCODE", "State", "scene"]
 
@@ -83,7 +82,7 @@ def scene(state):
             "text": pseudocode_html(PSEUDOCODE, _LINE[st["action"]], note)}
 
 
-class CohenSutherlandExplorer(Explorer):
+class CohenSutherlandExplorer(StepExplorer):
     """Drag the end points; step through the iterations with the slider or the buttons.
 
     In a notebook, after ``%matplotlib widget``, end a cell with ``CohenSutherlandExplorer()``.
@@ -103,8 +102,6 @@ class CohenSutherlandExplorer(Explorer):
                "region codes, each iteration and the clipped segment are shown.")
 
     def __init__(self, state=None):
-        import ipywidgets as w
-
         self.state = state or State()
         self.fig, ax = window_figure("Cohen-Sutherland: region codes (bits TBRL)", regions=True)
         s = scene(self.state)
@@ -120,29 +117,13 @@ class CohenSutherlandExplorer(Explorer):
                        for _ in range(2)]
         self.blitter = draw.Blitter(self.fig, [self.original, self.current, self.result,
                                                self.new_point, self.ends, *self.labels])
-        self.drag = DraggablePoints(ax, [self.state.p0, self.state.p1], self._on_drag)
-        self.step, controls = step_controls(self._on_step, len(s["steps"]))
-        self.step.value = self.state.step = len(s["steps"]) - 1
-        self.info = w.HTML(layout=w.Layout(width="430px"))
-        self.widget = w.HBox([self.fig.canvas, w.VBox([controls, self.info])],
-                             layout=w.Layout(flex_flow="row wrap"))
-        self._draw(scene(self.state))
+        self._wire(ax, [self.state.p0, self.state.p1], info_width="430px")
 
-    def _on_drag(self, index, xy):
-        setattr(self.state, f"p{index}", xy)
-        s = scene(self.state)
-        set_step_count(self.step, len(s["steps"]))
-        self.state.step = self.step.value
-        self.update()
+    def _scene(self):
+        return scene(self.state)
 
-    def _on_step(self, change):
-        self.state.step = change["new"]
-        self.update()
-
-    def update(self):
-        """Recompute the scene and move the drawn artists."""
-        self._draw(scene(self.state))
-        self.blitter.update()
+    def _step_count(self):
+        return len(scene(self.state)["steps"])
 
     def _draw(self, s):
         self.original.set_data(*np.array([self.state.p0, self.state.p1]).T)

@@ -18,7 +18,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import colormaps, draw, scivis
-from ._base import Explorer
+from ._base import Explorer, bind
 
 __all__ = ["DATASETS", "State", "ColormapExplorer", "example_data", "print_ambiguity",
            "scene"]
@@ -216,18 +216,12 @@ class ColormapExplorer(Explorer):
                                description="map")
         self.reverse = w.Checkbox(value=self.state.reverse, description="reversed")
         self.data = w.Dropdown(options=DATASETS, value=self.state.data, description="data")
-        for control in (self.name, self.reverse, self.data):
-            control.observe(self._on_change, names="value")
+        bind(self.state, {"name": self.name, "reverse": self.reverse, "data": self.data},
+             self.update)
         self.info = w.HTML(layout=w.Layout(width="300px"))
         controls = w.VBox([self.name, self.reverse, self.data, self.info])
         self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))
         self._draw(s)
-
-    def _on_change(self, change):
-        self.state.name = self.name.value
-        self.state.reverse = self.reverse.value
-        self.state.data = self.data.value
-        self.update()
 
     def update(self):
         """Recompute the scene and update the drawn artists (blitting)."""

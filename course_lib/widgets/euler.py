@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, mesh
-from ._base import Explorer, beside, figure_3d
+from ._base import Explorer, beside, bind, figure_3d
 
 __all__ = ["MESHES", "EulerExplorer", "State", "scene"]
 
@@ -102,15 +102,10 @@ class EulerExplorer(Explorer):
         self.choice = w.Dropdown(options=list(MESHES), value=self.state.mesh, description="mesh")
         self.refinement = w.IntSlider(value=self.state.refinement, min=0, max=3,
                                       description="refine")
-        for control in (self.choice, self.refinement):
-            control.observe(self._on_change, names="value")
+        bind(self.state, {"mesh": self.choice, "refinement": self.refinement}, self.update)
         self.info = w.HTML(layout=w.Layout(width="360px"))
         self.widget = beside(self.fig.canvas, w.VBox([self.choice, self.refinement, self.info]))
         self._draw(s)
-
-    def _on_change(self, change):
-        self.state.mesh, self.state.refinement = self.choice.value, self.refinement.value
-        self.update()
 
     def update(self):
         """Build the chosen mesh, count, and redraw it."""

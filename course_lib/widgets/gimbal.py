@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, transforms
-from ._base import Explorer, beside, degree_sliders, figure_3d
+from ._base import Explorer, beside, bind, degree_sliders, figure_3d
 from .quaternion import F_COLORS, F_FACES, F_VERTICES, LIGHT
 
 __all__ = ["GimbalExplorer", "State", "gimbal_frames", "scene"]
@@ -150,11 +150,13 @@ class GimbalExplorer(Explorer):
         self.blitter = draw.Blitter(self.fig, [self.mesh, *self.rings, *self.pivots, self.lost])
         self._set_lost(s)
 
-        sliders = degree_sliders(self._on_change, label_width="60px",
+        sliders = degree_sliders(None, label_width="60px",
                                  yaw=("yaw °", self.state.yaw_deg, -180, 180),
                                  pitch=("pitch °", self.state.pitch_deg, -90, 90),
                                  roll=("roll °", self.state.roll_deg, -180, 180))
         self.yaw, self.pitch, self.roll = sliders.values()
+        bind(self.state, {"yaw_deg": self.yaw, "pitch_deg": self.pitch, "roll_deg": self.roll},
+             self.update)
         legend = "<br>".join(f"<span style='color:{RING_COLORS[k]}'>&#9679;</span> "
                              f"{AXIS_NAMES[k]}" for k in range(3))
         self.info = w.HTML(value=s["text"], layout=w.Layout(width="330px"))
@@ -171,12 +173,6 @@ class GimbalExplorer(Explorer):
             self.lost.set_data_3d([], [], [])
         else:
             self.lost.set_data_3d(*np.array([-1.3 * s["lost_axis"], 1.3 * s["lost_axis"]]).T)
-
-    def _on_change(self, change):
-        self.state.yaw_deg = self.yaw.value
-        self.state.pitch_deg = self.pitch.value
-        self.state.roll_deg = self.roll.value
-        self.update()
 
     def update(self):
         """Recompute the scene and move the drawn artists (no re-plotting)."""

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import clipping, draw, shapes, viewing, visibility
-from ._base import Explorer, beside, degree_sliders
+from ._base import Explorer, beside, bind, degree_sliders
 
 __all__ = ["HiddenSurfaceExplorer", "State", "mesh", "scene"]
 
@@ -135,21 +135,17 @@ class HiddenSurfaceExplorer(Explorer):
         image.set_title("the depth buffer (dark = near)", fontsize=10)
         image.set(xticks=[], yticks=[])
         self.blitter = draw.Blitter(self.fig, [self.mesh, self.eye, self.sight, self.depth])
-        sliders = degree_sliders(self._on_change, label_width="70px",
+        sliders = degree_sliders(None, label_width="70px",
                                  azimuth=("camera az. °", self.state.azimuth_deg, -180, 180),
                                  elevation=("camera el. °", self.state.elevation_deg, -89, 89))
         self.azimuth, self.elevation = sliders.values()
         self.cull = w.Checkbox(value=self.state.cull, description="cull back faces")
-        self.cull.observe(self._on_change, names="value")
+        bind(self.state, {"azimuth_deg": self.azimuth, "elevation_deg": self.elevation,
+                          "cull": self.cull}, self.update)
         self.info = w.HTML(layout=w.Layout(width="330px"))
         self.widget = w.VBox([self.fig.canvas, beside(w.VBox([*sliders.values(), self.cull]),
                                                       self.info)])
         self._draw(s)
-
-    def _on_change(self, change):
-        self.state.azimuth_deg, self.state.elevation_deg = self.azimuth.value, self.elevation.value
-        self.state.cull = self.cull.value
-        self.update()
 
     def update(self):
         """Recompute the scene and move the drawn artists."""

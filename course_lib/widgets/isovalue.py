@@ -30,7 +30,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, scivis
-from ._base import Explorer
+from ._base import Explorer, bind
 
 __all__ = ["FIELDS", "IsolineExplorer", "IsosurfaceExplorer", "State", "State3D", "VOLUMES",
            "alternative_segments", "classic_marching_cubes", "example_data", "example_volume",
@@ -310,7 +310,7 @@ class IsolineExplorer(Explorer):
         self.size = w.IntSlider(value=self.state.size, min=4, max=MAX_SIZE,
                                 description="samples", layout=w.Layout(width="330px"))
         self.cases_box = w.Checkbox(value=self.state.show_cases, description="case numbers")
-        self.level.observe(self._on_change, names="value")
+        bind(self.state, {"level": self.level}, self.update)
         for control in (self.field, self.size, self.cases_box):
             control.observe(self._on_layout, names="value")
         self.info = w.HTML(layout=w.Layout(width="330px"))
@@ -337,10 +337,6 @@ class IsolineExplorer(Explorer):
         lines = [[(x, ys[0]), (x, ys[-1])] for x in xs] + [[(xs[0], y), (xs[-1], y)] for y in ys]
         self.grid_lines.set_segments(lines)
         self.blitter.forget_background()
-
-    def _on_change(self, change):
-        self.state.level = self.level.value
-        self.update()
 
     def _on_layout(self, change):
         self.state.field, self.state.size = self.field.value, self.size.value
@@ -675,8 +671,9 @@ class IsosurfaceExplorer(Explorer):
                                        description="view el. °", layout=w.Layout(width="330px"))
         self._level_range()
         self.volume.observe(self._on_volume, names="value")
-        for control in (self.level, self.table, self.azimuth, self.elevation):
-            control.observe(self._on_change, names="value")
+        self._on_change = bind(self.state, {"level": self.level, "table": self.table,
+                                            "azimuth": self.azimuth,
+                                            "elevation": self.elevation}, self.update)
         self.info = w.HTML(layout=w.Layout(width="340px"))
         self.widget = w.HBox([self.image, w.VBox([self.volume, self.level, self.table,
                                                   self.azimuth, self.elevation, self.info])],
@@ -696,11 +693,6 @@ class IsosurfaceExplorer(Explorer):
             self._level_range()
             self.level.value = float(example_volume(self.state.volume).level)
         self._on_change(None)
-
-    def _on_change(self, change):
-        self.state.level, self.state.table = self.level.value, self.table.value
-        self.state.azimuth, self.state.elevation = self.azimuth.value, self.elevation.value
-        self.update()
 
     def update(self):
         """Recompute the isosurface, update the pyvista meshes and render a new picture."""

@@ -6,9 +6,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import clipping, draw, format as fmt
-from ._base import Explorer
-from ._clip2d import BOX_MAX, BOX_MIN, LIMITS, set_step_count, step_controls
-from ._drag import DraggablePoints, pseudocode_html
+from ._clip2d import BOX_MAX, BOX_MIN, LIMITS, StepExplorer
+from ._drag import pseudocode_html
 
 __all__ = ["LiangBarskyExplorer", "PSEUDOCODE", "State", "T_RANGE", "scene"]
 
@@ -102,7 +101,7 @@ def scene(state):
             "text": pseudocode_html(PSEUDOCODE, line, note)}
 
 
-class LiangBarskyExplorer(Explorer):
+class LiangBarskyExplorer(StepExplorer):
     """Drag the end points; step through the four sides and watch [t_in, t_out] shrink.
 
     In a notebook, after ``%matplotlib widget``, end a cell with ``LiangBarskyExplorer()``.
@@ -119,10 +118,7 @@ class LiangBarskyExplorer(Explorer):
                "values of the four sides on a number line and the clipped interval.")
 
     def __init__(self, state=None):
-        import ipywidgets as w
-
         self.state = state or State()
-        s = scene(self.state)
         self.fig = draw.figure(figsize=(4.6, 5.6))
         grid = self.fig.add_gridspec(2, 1, height_ratios=(4.2, 1), left=0.11, right=0.97,
                                      bottom=0.07, top=0.95, hspace=0.28)
@@ -154,28 +150,13 @@ class LiangBarskyExplorer(Explorer):
                                                self.enter_pts, self.leave_pts, self.ends,
                                                self.interval, self.enter_t, self.leave_t,
                                                *self.t_labels])
-        self.drag = DraggablePoints(ax, [self.state.p0, self.state.p1], self._on_drag)
-        self.step, controls = step_controls(self._on_step, s["count"])
-        self.step.value = self.state.step = s["count"] - 1
-        self.info = w.HTML(layout=w.Layout(width="480px"))
-        self.widget = w.HBox([self.fig.canvas, w.VBox([controls, self.info])],
-                             layout=w.Layout(flex_flow="row wrap"))
-        self._draw(scene(self.state))
+        self._wire(ax, [self.state.p0, self.state.p1], info_width="480px")
 
-    def _on_drag(self, index, xy):
-        setattr(self.state, f"p{index}", xy)
-        set_step_count(self.step, scene(self.state)["count"])
-        self.state.step = self.step.value
-        self.update()
+    def _scene(self):
+        return scene(self.state)
 
-    def _on_step(self, change):
-        self.state.step = change["new"]
-        self.update()
-
-    def update(self):
-        """Recompute the scene and move the drawn artists."""
-        self._draw(scene(self.state))
-        self.blitter.update()
+    def _step_count(self):
+        return scene(self.state)["count"]
 
     def _draw(self, s):
         p0, p1 = np.asarray(self.state.p0), np.asarray(self.state.p1)

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, mesh
-from ._base import Explorer, beside, figure_3d
+from ._base import Explorer, beside, bind, figure_3d
 
 __all__ = ["MESHES", "HalfEdgeExplorer", "State", "scene"]
 
@@ -173,7 +173,7 @@ class HalfEdgeExplorer(Explorer):
             button.on_click(lambda _, name=name: self.step(name))
             self.buttons[name] = button
         self.choice.observe(self._on_mesh, names="value")
-        self.index.observe(self._on_index, names="value")
+        bind(self.state, {"half_edge": self.index}, self.update)
         self.info = w.HTML(layout=w.Layout(width="380px"))
         self.table = w.HTML()
         controls = w.VBox([self.choice, self.index, w.HBox(list(self.buttons.values())),
@@ -187,10 +187,6 @@ class HalfEdgeExplorer(Explorer):
         target = {"next": self.he.next, "previous": self.he.prev,
                   "opposite": self.he.twin}[name][h]
         self.index.value = int(target)          # runs update() through the observer
-
-    def _on_index(self, change):
-        self.state.half_edge = int(change["new"])
-        self.update()
 
     def _on_mesh(self, change):
         self.state.mesh = change["new"]

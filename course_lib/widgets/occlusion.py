@@ -22,7 +22,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, shading
-from ._base import Explorer
+from ._base import Explorer, bind, slider
 
 __all__ = ["KINDS", "MAX_SAMPLES", "OcclusionExplorer", "State", "convergence", "exact",
            "floor_points", "occluders", "ray_visibility", "scene"]
@@ -312,26 +312,18 @@ class OcclusionExplorer(Explorer):
                                                self.err_title, self.se_line, self.rms_line,
                                                self.marker,
                                                *[a for pair in self.outlines for a in pair]])
-        self.samples = w.IntSlider(value=self.state.samples, min=1, max=MAX_SAMPLES,
-                                   description="rays k", continuous_update=True,
-                                   style={"description_width": "60px"},
-                                   layout=w.Layout(width="420px"))
+        self.samples = slider("rays k", self.state.samples, 1, MAX_SAMPLES, 1, kind=w.IntSlider,
+                              label_width="60px", width="420px")
         self.kind = w.ToggleButtons(options=KINDS, value=self.state.kind,
                                     style={"button_width": "110px"})
-        self.seed = w.IntSlider(value=self.state.seed, min=0, max=9, description="seed",
-                                continuous_update=False, style={"description_width": "60px"},
-                                layout=w.Layout(width="250px"))
-        for control in (self.samples, self.kind, self.seed):
-            control.observe(self._on_change, names="value")
+        self.seed = slider("seed", self.state.seed, 0, 9, 1, kind=w.IntSlider, label_width="60px",
+                           width="250px", continuous_update=False)
+        bind(self.state, {"samples": self.samples, "kind": self.kind, "seed": self.seed},
+             self.update)
         self.info = w.HTML(layout=w.Layout(width="760px"))
         self.widget = w.VBox([self.fig.canvas, w.HBox([self.samples, self.seed]), self.kind,
                               self.info])
         self._draw(s)
-
-    def _on_change(self, change):
-        self.state.samples, self.state.kind = self.samples.value, self.kind.value
-        self.state.seed = self.seed.value
-        self.update()
 
     def update(self):
         """Recompute the scene (the rays are cached per scene and seed) and update the

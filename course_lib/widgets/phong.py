@@ -23,7 +23,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, shading, viewing, visibility
-from ._base import Explorer, degree_sliders
+from ._base import Explorer, bind, degree_sliders, labelled, slider
 
 __all__ = ["MODELS", "PhongExplorer", "State", "interpolation_buffers", "light_direction",
            "scene", "sphere_normals"]
@@ -332,41 +332,27 @@ class PhongExplorer(Explorer):
         self.blitter = draw.Blitter(self.fig, [*self.images.values(), self.sun, self.peak,
                                                self.model_label])
 
-        def slider(description, value, low, high, step):
-            control = w.FloatSlider(value=value, min=low, max=high, step=step,
-                                    description=description, continuous_update=True,
-                                    style={"description_width": "80px"},
-                                    layout=w.Layout(width="300px"))
-            control.observe(self._on_change, names="value")
-            return control
-
-        self.ka = slider("k_a ambient", self.state.ka, 0, 1, 0.01)
-        self.kd = slider("k_d diffuse", self.state.kd, 0, 1, 0.01)
-        self.ks = slider("k_s specular", self.state.ks, 0, 1, 0.01)
-        self.shininess = w.FloatLogSlider(value=self.state.shininess, base=2, min=0, max=9,
-                                          step=0.1, description="shininess n",
-                                          style={"description_width": "80px"},
-                                          layout=w.Layout(width="300px"))
-        self.shininess.observe(self._on_change, names="value")
-        self.emission = slider("emission", self.state.emission, 0, 1, 0.01)
-        sliders = degree_sliders(self._on_change,
-                                 azimuth=("light az. °", self.state.light_azimuth, -180, 180),
-                                 elevation=("light el. °", self.state.light_elevation, -89, 89))
+        st = self.state
+        self.ka = slider("k_a ambient", st.ka, 0, 1, 0.01)
+        self.kd = slider("k_d diffuse", st.kd, 0, 1, 0.01)
+        self.ks = slider("k_s specular", st.ks, 0, 1, 0.01)
+        self.shininess = labelled(w.FloatLogSlider, "shininess n", value=st.shininess, base=2,
+                                  min=0, max=9, step=0.1)
+        self.emission = slider("emission", st.emission, 0, 1, 0.01)
+        sliders = degree_sliders(None, azimuth=("light az. °", st.light_azimuth, -180, 180),
+                                 elevation=("light el. °", st.light_elevation, -89, 89))
         self.azimuth, self.elevation = sliders["azimuth"], sliders["elevation"]
-        self.light_color = w.ColorPicker(value=self.state.light_color, description="light",
-                                         concise=False, layout=w.Layout(width="300px"),
-                                         style={"description_width": "80px"})
-        self.color = w.ColorPicker(value=self.state.color, description="object",
-                                   layout=w.Layout(width="300px"),
-                                   style={"description_width": "80px"})
-        self.model = w.ToggleButtons(options=MODELS, value=self.state.model,
+        self.light_color = labelled(w.ColorPicker, "light", value=st.light_color, concise=False)
+        self.color = labelled(w.ColorPicker, "object", value=st.color)
+        self.model = w.ToggleButtons(options=MODELS, value=st.model,
                                      style={"button_width": "110px"})
-        self.segments = w.IntSlider(value=self.state.segments, min=4, max=32, step=2,
-                                    description="mesh segments", continuous_update=False,
-                                    style={"description_width": "80px"},
-                                    layout=w.Layout(width="300px"))
-        for control in (self.light_color, self.color, self.model, self.segments):
-            control.observe(self._on_change, names="value")
+        self.segments = slider("mesh segments", st.segments, 4, 32, 2, kind=w.IntSlider,
+                               continuous_update=False)
+        bind(st, {"ka": self.ka, "kd": self.kd, "ks": self.ks, "shininess": self.shininess,
+                  "emission": self.emission, "light_azimuth": self.azimuth,
+                  "light_elevation": self.elevation, "light_color": self.light_color,
+                  "color": self.color, "model": self.model, "segments": self.segments},
+             self.update)
         self.info = w.HTML(layout=w.Layout(width="330px"))
         column1 = w.VBox([self.ka, self.kd, self.ks, self.shininess, self.emission])
         column2 = w.VBox([self.azimuth, self.elevation, self.light_color, self.color,
@@ -375,15 +361,6 @@ class PhongExplorer(Explorer):
                                      layout=w.Layout(flex_flow="row wrap")),
                               w.HBox([column1, column2], layout=w.Layout(flex_flow="row wrap"))])
         self._draw(s)
-
-    def _on_change(self, change):
-        st = self.state
-        st.ka, st.kd, st.ks = self.ka.value, self.kd.value, self.ks.value
-        st.shininess, st.emission = self.shininess.value, self.emission.value
-        st.light_azimuth, st.light_elevation = self.azimuth.value, self.elevation.value
-        st.light_color, st.color = self.light_color.value, self.color.value
-        st.model, st.segments = self.model.value, self.segments.value
-        self.update()
 
     def update(self):
         """Recompute the scene and update the pictures in place."""

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, format as fmt, quaternions, shapes
-from ._base import Explorer, beside, degree_sliders, figure_3d
+from ._base import Explorer, beside, bind, degree_sliders, figure_3d
 
 __all__ = ["QuaternionExplorer", "State", "axis_from_angles", "readout", "scene"]
 
@@ -159,19 +159,15 @@ class QuaternionExplorer(Explorer):
                                                self.arc_end])
 
         sliders = degree_sliders(
-            self._on_change,
+            None,
             azimuth=("axis azim. °", self.state.azimuth_deg, -180, 180),
             elevation=("axis elev. °", self.state.elevation_deg, -90, 90),
             angle=("angle θ °", self.state.angle_deg, -360, 360))
         self.azimuth, self.elevation, self.angle = sliders.values()
+        bind(self.state, {"azimuth_deg": self.azimuth, "elevation_deg": self.elevation,
+                          "angle_deg": self.angle}, self.update)
         self.info = w.HTMLMath(value=s["text"], layout=w.Layout(width="330px"))
         self.widget = beside(self.fig.canvas, w.VBox([*sliders.values(), self.info]))
-
-    def _on_change(self, change):
-        self.state.azimuth_deg = self.azimuth.value
-        self.state.elevation_deg = self.elevation.value
-        self.state.angle_deg = self.angle.value
-        self.update()
 
     def update(self):
         """Recompute the scene and move the drawn artists (no re-plotting)."""

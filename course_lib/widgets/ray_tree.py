@@ -16,7 +16,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, raytracing as rt
-from ._base import Explorer
+from ._base import Explorer, read_controls
 
 __all__ = ["KINDS", "RAY_COLORS", "RayTreeExplorer", "State", "clip_segment", "example",
            "picture", "scene"]
@@ -303,6 +303,9 @@ class RayTreeExplorer(Explorer):
                                  description="max depth", continuous_update=True, style=style)
         self.shadows = w.Checkbox(value=self.state.shadows, description="shadow rays",
                                   indent=False)
+        #: field of ``State`` -> its control (a click on the image sets row and column)
+        self.controls = {"kind": self.kind, "max_depth": self.depth, "shadows": self.shadows,
+                         "row": self.row, "column": self.column}
         for control in (self.kind, self.row, self.column, self.depth, self.shadows):
             control.observe(self._on_change, names="value")
         self._cid = self.fig.canvas.mpl_connect("button_press_event", self._on_click)
@@ -359,9 +362,7 @@ class RayTreeExplorer(Explorer):
     def _on_change(self, change):
         if self._quiet:
             return
-        st = self.state
-        st.kind, st.max_depth, st.shadows = self.kind.value, self.depth.value, self.shadows.value
-        st.row, st.column = self.row.value, self.column.value
+        read_controls(self.state, self.controls)
         self.update()
 
     def _key(self):

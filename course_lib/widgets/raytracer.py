@@ -23,7 +23,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .. import raytracing as rt
-from ._base import Explorer
+from ._base import Explorer, bind, slider
 
 __all__ = ["FULL", "PREVIEW", "RayTracerExplorer", "State", "TARGET", "build_scene",
            "make_camera", "scene"]
@@ -190,26 +190,23 @@ class RayTracerExplorer(Explorer):
         self._timer = None
         self.last_ms = 0.0
         self.image = w.Image(format="png", layout=w.Layout(width=f"{DISPLAY_WIDTH}px"))
-        style = {"description_width": "110px"}
-        layout = w.Layout(width="340px")
-
-        def slider(cls, description, value, low, high, step, **kwargs):
-            control = cls(value=value, min=low, max=high, step=step, description=description,
-                          continuous_update=True, style=style, layout=layout, **kwargs)
-            control.observe(self._on_change, names="value")
-            return control
-
         st = self.state
-        self.depth = slider(w.IntSlider, "recursion depth", st.max_depth, 0, 6, 1)
+        options = {"label_width": "110px", "width": "340px"}
+        self.depth = slider("recursion depth", st.max_depth, 0, 6, 1, kind=w.IntSlider, **options)
         self.shadows = w.Checkbox(value=st.shadows, description="shadow rays", indent=False)
-        self.shadows.observe(self._on_change, names="value")
-        self.mirror = slider(w.FloatSlider, "mirror k_r", st.mirror_reflectivity, 0, 1, 0.05)
-        self.glass = slider(w.FloatSlider, "glass k_t", st.glass_transparency, 0, 1, 0.05)
-        self.ior = slider(w.FloatSlider, "glass index η", st.glass_ior, 1.0, 2.5, 0.01)
-        self.floor = slider(w.FloatSlider, "floor k_r", st.floor_reflectivity, 0, 1, 0.05)
-        self.azimuth = slider(w.FloatSlider, "camera az. °", st.azimuth, -180, 180, 2)
-        self.elevation = slider(w.FloatSlider, "camera el. °", st.elevation, 2, 70, 1)
-        self.distance = slider(w.FloatSlider, "camera distance", st.distance, 3.0, 12.0, 0.1)
+        self.mirror = slider("mirror k_r", st.mirror_reflectivity, 0, 1, 0.05, **options)
+        self.glass = slider("glass k_t", st.glass_transparency, 0, 1, 0.05, **options)
+        self.ior = slider("glass index η", st.glass_ior, 1.0, 2.5, 0.01, **options)
+        self.floor = slider("floor k_r", st.floor_reflectivity, 0, 1, 0.05, **options)
+        self.azimuth = slider("camera az. °", st.azimuth, -180, 180, 2, **options)
+        self.elevation = slider("camera el. °", st.elevation, 2, 70, 1, **options)
+        self.distance = slider("camera distance", st.distance, 3.0, 12.0, 0.1, **options)
+        # k_r + k_t <= 1 for the glass (its own k_r is 0), always true on [0, 1]
+        bind(st, {"max_depth": self.depth, "shadows": self.shadows,
+                  "mirror_reflectivity": self.mirror, "floor_reflectivity": self.floor,
+                  "glass_ior": self.ior, "glass_transparency": self.glass,
+                  "azimuth": self.azimuth, "elevation": self.elevation,
+                  "distance": self.distance}, self.update)
         self.full_button = w.Button(description="render full image", icon="image")
         self.full_button.on_click(lambda _: self.settle())
         self.status = w.HTML()
@@ -223,20 +220,6 @@ class RayTracerExplorer(Explorer):
                               self.info])
         self.current = None
         self._render(preview=False)
-
-    def _read_controls(self):
-        st = self.state
-        st.max_depth, st.shadows = self.depth.value, self.shadows.value
-        st.mirror_reflectivity, st.floor_reflectivity = self.mirror.value, self.floor.value
-        st.glass_ior = self.ior.value
-        # k_r + k_t <= 1 for the glass (its own k_r is 0), always true on [0, 1]
-        st.glass_transparency = self.glass.value
-        st.azimuth, st.elevation = self.azimuth.value, self.elevation.value
-        st.distance = self.distance.value
-
-    def _on_change(self, change):
-        self._read_controls()
-        self.update()
 
     def update(self):
         """A slider moved: show the preview now, and the full image once the slider rests."""

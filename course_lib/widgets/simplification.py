@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, mesh
-from ._base import Explorer
+from ._base import Explorer, bind
 
 __all__ = ["START_FACES", "TARGET_FACES", "SimplificationExplorer", "State", "bumpy_sphere",
            "scene"]
@@ -144,16 +144,12 @@ class SimplificationExplorer(Explorer):
         self.image = w.Image(format="jpeg", layout=w.Layout(width="420px"))
         self.faces = w.IntSlider(value=self.state.faces, min=TARGET_FACES, max=START_FACES,
                                  step=2, description="faces", continuous_update=True)
-        self.faces.observe(self._on_change, names="value")
+        bind(self.state, {"faces": self.faces}, self.update)
         self.info = w.HTML(layout=w.Layout(width="380px"))
         self.table = w.HTML()
         self.widget = w.HBox([self.image, w.VBox([self.faces, self.info, self.table])],
                              layout=w.Layout(flex_flow="row wrap"))
         self._draw(s)
-
-    def _on_change(self, change):
-        self.state.faces = int(change["new"])
-        self.update()
 
     def update(self):
         """Replay the record to the slider's face count and render the new mesh."""

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import draw, scivis
-from ._base import Explorer
+from ._base import Explorer, bind
 from ._drag import DraggablePoints
 
 __all__ = ["FIELDS", "METHODS", "State", "StreamlineExplorer", "convergence", "exact_streamline",
@@ -309,8 +309,8 @@ class StreamlineExplorer(Explorer):
         self.exact_box = w.Checkbox(value=self.state.show_exact, description="exact path")
         self.kind.observe(self._on_kind, names="value")
         self.duration.observe(self._on_duration, names="value")
-        for control in (self.method, self.step, self.exact_box):
-            control.observe(self._on_change, names="value")
+        bind(self.state, {"method": self.method, "step": self.step,
+                          "show_exact": self.exact_box}, self.update)
         self.info = w.HTML(layout=w.Layout(width="340px"))
         controls = w.VBox([self.kind, self.method, self.step, self.duration, self.exact_box,
                            self.info])
@@ -352,11 +352,6 @@ class StreamlineExplorer(Explorer):
     def _on_duration(self, change):
         self.state.duration = change["new"]
         self._convergence()
-        self.update()
-
-    def _on_change(self, change):
-        self.state.method, self.state.step = self.method.value, self.step.value
-        self.state.show_exact = self.exact_box.value
         self.update()
 
     def update(self):

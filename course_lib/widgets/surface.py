@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import curves, draw, surfaces
-from ._base import Explorer
+from ._base import Explorer, bind
 
 __all__ = ["KINDS", "State", "SurfaceExplorer", "control_grid", "scene"]
 
@@ -185,9 +185,9 @@ class SurfaceExplorer(Explorer):
                                      description="view az. °")
         self.elevation = w.FloatSlider(value=self.state.elevation, min=-10, max=80, step=2,
                                        description="view el. °")
-        for control in (self.kind, self.i, self.j, self.lift, self.weight, self.azimuth,
-                        self.elevation):
-            control.observe(self._on_change, names="value")
+        bind(self.state, {"kind": self.kind, "i": self.i, "j": self.j, "lift": self.lift,
+                          "weight": self.weight, "azimuth": self.azimuth,
+                          "elevation": self.elevation}, self._on_change)
         self.info = w.HTML(layout=w.Layout(width="360px"))
         self.widget = w.HBox([self.image, w.VBox([self.kind, self.i, self.j, self.lift,
                                                   self.weight, self.azimuth, self.elevation,
@@ -202,11 +202,7 @@ class SurfaceExplorer(Explorer):
         eye = 6.5 * np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
         self.plotter.camera_position = [tuple(eye), (0.0, 0.0, 0.2), (0.0, 0.0, 1.0)]
 
-    def _on_change(self, change):
-        self.state.kind = self.kind.value
-        self.state.i, self.state.j = self.i.value, self.j.value
-        self.state.lift, self.state.weight = self.lift.value, self.weight.value
-        self.state.azimuth, self.state.elevation = self.azimuth.value, self.elevation.value
+    def _on_change(self):
         self.weight.disabled = self.state.kind != "NURBS"    # only a rational patch has weights
         self.update()
 

@@ -5,9 +5,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import clipping, draw, format as fmt
-from ._base import Explorer
-from ._clip2d import BOX_MAX, BOX_MIN, LIMITS, set_step_count, step_controls, window_figure
-from ._drag import DraggablePoints, pseudocode_html
+from ._clip2d import BOX_MAX, BOX_MIN, LIMITS, StepExplorer, window_figure
+from ._drag import pseudocode_html
 
 __all__ = ["PSEUDOCODE", "State", "SutherlandHodgmanExplorer", "scene"]
 
@@ -107,7 +106,7 @@ def _closed(poly):
     return np.vstack([poly, poly[:1]]) if len(poly) else np.zeros((0, 2))
 
 
-class SutherlandHodgmanExplorer(Explorer):
+class SutherlandHodgmanExplorer(StepExplorer):
     """Drag the polygon's vertices; step through the four sides of the window.
 
     In a notebook, after ``%matplotlib widget``, end a cell with ``SutherlandHodgmanExplorer()``.
@@ -124,8 +123,6 @@ class SutherlandHodgmanExplorer(Explorer):
                "clipped by one side of the window at a time.")
 
     def __init__(self, state=None):
-        import ipywidgets as w
-
         self.state = state or State()
         self.fig, ax = window_figure("Sutherland-Hodgman: one side at a time")
         self.outside = ax.fill([], [], color="#c62828", alpha=0.12, zorder=1)[0]
@@ -139,27 +136,16 @@ class SutherlandHodgmanExplorer(Explorer):
         self.blitter = draw.Blitter(self.fig, [self.outside, self.side_line, self.original,
                                                self.before, self.after, self.after_pts,
                                                *self.numbers])
-        self.drag = DraggablePoints(ax, self.state.polygon, self._on_drag)
-        self.step, controls = step_controls(self._on_step, 5)
-        self.step.value = self.state.step = 4
-        self.info = w.HTML(layout=w.Layout(width="440px"))
-        self.widget = w.HBox([self.fig.canvas, w.VBox([controls, self.info])],
-                             layout=w.Layout(flex_flow="row wrap"))
-        self._draw(scene(self.state))
+        self._wire(ax, self.state.polygon, info_width="440px")
 
-    def _on_drag(self, index, xy):
+    def _scene(self):
+        return scene(self.state)
+
+    def _step_count(self):
+        return 5                                   # the input, then after each of the 4 sides
+
+    def _move(self, index, xy):
         self.state.polygon = self.drag.points.copy()
-        set_step_count(self.step, 5)
-        self.update()
-
-    def _on_step(self, change):
-        self.state.step = change["new"]
-        self.update()
-
-    def update(self):
-        """Recompute the scene and move the drawn artists."""
-        self._draw(scene(self.state))
-        self.blitter.update()
 
     def _draw(self, s):
         self.original.set_data(*_closed(np.asarray(self.state.polygon)).T)

@@ -29,7 +29,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, texturing
-from ._base import Explorer
+from ._base import Explorer, labelled, read_controls, slider
 
 __all__ = ["MAPPINGS", "SIZES", "State", "TEXTURES", "TextureExplorer", "compendium_map",
            "filtering", "mesh_grid", "scene", "texture_image", "texture_uv"]
@@ -452,38 +452,29 @@ class TextureExplorer(Explorer):
                 ax.set_title(f"{key}: {label}", fontsize=8)
         self.blitter = draw.Blitter(self.fig, list(self.panel.values()))
 
-        def dropdown(options, value, description):
-            control = w.Dropdown(options=options, value=value, description=description,
-                                 style={"description_width": "70px"},
-                                 layout=w.Layout(width="300px"))
-            control.observe(self._on_change, names="value")
-            return control
-
-        def slider(value, low, high, step, description):
-            control = w.FloatSlider(value=value, min=low, max=high, step=step,
-                                    description=description, continuous_update=True,
-                                    style={"description_width": "70px"},
-                                    layout=w.Layout(width="300px"))
-            control.observe(self._on_change, names="value")
-            return control
-
+        st, options = self.state, {"label_width": "70px", "width": "300px"}
         self._busy = False
-        self.texture = w.Dropdown(options=TEXTURES, value=self.state.texture,
-                                  description="texture", style={"description_width": "70px"},
-                                  layout=w.Layout(width="300px"))
+        self.texture = labelled(w.Dropdown, "texture", options=TEXTURES, value=st.texture,
+                                **options)
         self.texture.observe(self._on_texture, names="value")
-        self.frequency = slider(self.state.frequency, 1, 32, 1, "frequency")
-        self.strength = slider(self.state.strength, 0, 8, 0.1, "turbulence")
-        self.size = w.SelectionSlider(options=SIZES, value=self.state.size,
-                                      description="texels", style={"description_width": "70px"},
-                                      layout=w.Layout(width="300px"))
-        self.size.observe(self._on_change, names="value")
-        self.sampling = w.ToggleButtons(options=SAMPLINGS, value=self.state.sampling,
+        self.frequency = slider("frequency", st.frequency, 1, 32, 1, **options)
+        self.strength = slider("turbulence", st.strength, 0, 8, 0.1, **options)
+        self.size = labelled(w.SelectionSlider, "texels", options=SIZES, value=st.size,
+                             **options)
+        self.sampling = w.ToggleButtons(options=SAMPLINGS, value=st.sampling,
                                         style={"button_width": "90px"})
-        self.sampling.observe(self._on_change, names="value")
-        self.mapping = dropdown(MAPPINGS, self.state.mapping, "mapping")
-        self.azimuth = slider(self.state.azimuth, -180, 180, 2, "view az. °")
-        self.elevation = slider(self.state.elevation, -80, 80, 2, "view el. °")
+        self.mapping = labelled(w.Dropdown, "mapping", options=MAPPINGS, value=st.mapping,
+                                **options)
+        self.azimuth = slider("view az. °", st.azimuth, -180, 180, 2, **options)
+        self.elevation = slider("view el. °", st.elevation, -80, 80, 2, **options)
+        #: field of ``State`` -> its control (the texture menu also resets two sliders)
+        self.controls = {"texture": self.texture, "frequency": self.frequency,
+                         "strength": self.strength, "size": self.size,
+                         "sampling": self.sampling, "mapping": self.mapping,
+                         "azimuth": self.azimuth, "elevation": self.elevation}
+        for name, control in self.controls.items():
+            if name != "texture":
+                control.observe(self._on_change, names="value")
         self.info = w.HTML(layout=w.Layout(width="320px"))
         controls = w.VBox([self.texture, self.frequency, self.strength, self.size,
                            self.sampling, self.mapping, self.azimuth, self.elevation])
@@ -512,11 +503,7 @@ class TextureExplorer(Explorer):
     def _on_change(self, change):
         if self._busy:
             return
-        st = self.state
-        st.texture, st.frequency, st.strength = (self.texture.value, self.frequency.value,
-                                                 self.strength.value)
-        st.size, st.sampling, st.mapping = self.size.value, self.sampling.value, self.mapping.value
-        st.azimuth, st.elevation = self.azimuth.value, self.elevation.value
+        read_controls(self.state, self.controls)
         self.update()
 
     def _key(self):

@@ -29,7 +29,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import colormaps, draw, scivis
-from ._base import Explorer
+from ._base import Explorer, bind
 from ._drag import DraggablePoints
 
 __all__ = ["FIELDS", "PRESETS", "RaySamples", "State", "TransferFunctionExplorer", "example_data",
@@ -495,8 +495,7 @@ class TransferFunctionExplorer(Explorer):
         for control in (self.value, self.opacity, self.color):
             control.observe(self._on_edit, names="value")
         self.recolor.observe(self._on_recolor, names="value")
-        self.azimuth.observe(self._on_view, names="value")
-        self.thickness.observe(self._on_view, names="value")
+        bind(self.state, {"azimuth": self.azimuth, "thickness": self.thickness}, self.update)
         self.info = w.HTML(layout=w.Layout(width="310px"))
         controls = w.VBox([self.preset, self.field, self.point, self.value, self.opacity,
                            self.color, w.HBox([add, remove]), self.recolor, self.thickness,
@@ -638,11 +637,6 @@ class TransferFunctionExplorer(Explorer):
             self._syncing = False
         self._custom()
         self._set_points(self.state.points, colors, self.state.opacities, self.state.selected)
-
-    def _on_view(self, change):
-        self.state.azimuth = self.azimuth.value
-        self.state.thickness = self.thickness.value
-        self.update()
 
     def update(self):
         """Recompute the scene and update the drawn artists (blitting)."""

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, visibility
-from ._base import Explorer
+from ._base import Explorer, bind
 from ._drag import pseudocode_html
 
 __all__ = ["ORDERS", "PSEUDOCODE", "State", "TRIANGLES", "ZBufferExplorer", "scene"]
@@ -171,20 +171,15 @@ class ZBufferExplorer(Explorer):
                                                *[m for pair in self.marks for m in pair]])
         self.order = w.Dropdown(options=list(ORDERS), value=self.state.order,
                                 description="order", layout=w.Layout(width="330px"))
-        self.order.observe(self._on_change, names="value")
         self.step = w.IntSlider(value=self.state.step, min=0, max=len(TRIANGLES),
                                 description="triangles", continuous_update=True)
-        self.step.observe(self._on_change, names="value")
+        bind(self.state, {"order": self.order, "step": self.step}, self.update)
         self.info = w.HTML(layout=w.Layout(width="800px"))
         legend = w.HTML("<small>□ pixels the current triangle covers &nbsp; × pixels it "
                         "overwrites</small>")
         self.widget = w.VBox([w.HBox([self.order, self.step]), self.fig.canvas, legend,
                               self.info])
         self._draw(s)
-
-    def _on_change(self, change):
-        self.state.order, self.state.step = self.order.value, self.step.value
-        self.update()
 
     def update(self):
         """Recompute the scene and move the drawn artists."""
