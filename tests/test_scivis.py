@@ -265,6 +265,58 @@ def test_marching_squares_bad_input(kwargs, match):
         S.marching_squares(**args)
 
 
+def test_opposite_saddles_take_the_pairing_the_decider_rejects():
+    # case 5, above 1: the decider joins corners 0 and 2 (cuts off 1 and 3); the other
+    # reading cuts off corners 0 and 2 instead, and the other way round for above 0.9
+    opposite = S.marching_squares(unit_cell(5, above=1.0), 0.5, saddles="opposite")
+    assert as_point_sets(opposite) == sorted([{B, L}, {R, T}], key=lambda s: sorted(s))
+    for case in (5, 10):
+        for above in (1.0, 0.9):
+            cell = unit_cell(case, above=above)
+            chosen = S.marching_squares(cell, 0.5)
+            other = S.marching_squares(cell, 0.5, saddles="opposite")
+            points = {p for seg in as_point_sets(chosen) for p in seg}
+            assert points == {p for seg in as_point_sets(other) for p in seg}
+            assert not any(seg in as_point_sets(chosen) for seg in as_point_sets(other))
+    # cells without a saddle read the same either way
+    for case in HAND_TABLE:
+        np.testing.assert_array_equal(S.marching_squares(unit_cell(case), 0.5, saddles="opposite"),
+                                      S.marching_squares(unit_cell(case), 0.5))
+
+
+@pytest.mark.parametrize("seed", [3, 4])
+def test_marching_squares_cells_mask_marches_a_subset(seed):
+    field = rng(seed).uniform(-1, 1, (9, 11))
+    cases = S.marching_squares_cases(field, 0.1)
+    saddle = np.isin(cases, (5, 10))
+    assert saddle.any()
+
+    def rows(segments):
+        return sorted(map(tuple, np.round(segments.reshape(len(segments), -1), 12)))
+    full = S.marching_squares(field, 0.1, (0.5, 2.0), (1.0, -1.0))
+    parts = [S.marching_squares(field, 0.1, (0.5, 2.0), (1.0, -1.0), cells=m)
+             for m in (saddle, ~saddle)]
+    assert rows(np.concatenate(parts)) == rows(full)
+    assert len(parts[0]) == 2 * int(saddle.sum())
+    # the rejected pairings of the saddle cells alone: the same crossings, other segments
+    other = S.marching_squares(field, 0.1, (0.5, 2.0), (1.0, -1.0), saddles="opposite",
+                               cells=saddle)
+    assert sorted(map(tuple, np.round(other.reshape(-1, 2), 12))) == \
+        sorted(map(tuple, np.round(parts[0].reshape(-1, 2), 12)))
+    assert not set(rows(other)) & set(rows(parts[0]))
+    assert len(S.marching_squares(field, 0.1, cells=np.zeros_like(saddle))) == 0
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"saddles": "asymptotic"}, "saddles must be one of"),
+    ({"cells": np.ones((3, 3), bool)}, "cells must be a boolean mask of shape"),
+    ({"cells": np.ones((2, 2))}, "cells must be a boolean mask of shape"),
+])
+def test_marching_squares_options_bad_input(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        S.marching_squares(np.eye(3), 0.5, **kwargs)
+
+
 # ---------------------------------------------------------------------------------------------
 # marching cubes
 # ---------------------------------------------------------------------------------------------
@@ -433,6 +485,91 @@ def test_marching_cubes_bad_input(kwargs, match):
     args = {"volume": np.ones((3, 3, 3)), "level": 0.5, **kwargs}
     with pytest.raises((ValueError, TypeError), match=match):
         S.marching_cubes(**args)
+
+
+def rim_edges(tris):
+    """Edges of one triangle only (the rims of holes), sorted vertex pairs."""
+    edges, uses = np.unique(np.sort(directed_edges(tris), axis=1), axis=0, return_counts=True)
+    return edges[uses == 1]
+
+
+def test_classic_table_equals_the_consistent_one_without_ambiguous_faces():
+    for kind, size in (("sphere", 40), ("blobs", 32), ("torus", 40)):
+        f = S.example_volume(kind, size=size)
+        classic = S.marching_cubes(f.values, f.level, f.spacing, f.origin, table="classic")
+        consistent = S.marching_cubes(f.values, f.level, f.spacing, f.origin)
+        for a, b in zip(classic, consistent):
+            np.testing.assert_array_equal(a, b)
+        sv, sf = skimage_mesh(f.values, f.level, f.spacing, f.origin, "lorensen")
+        assert S.surface_area(*classic) == pytest.approx(measure.mesh_surface_area(sv, sf),
+                                                         rel=1e-3)
+
+
+def test_classic_table_leaves_holes_only_on_ambiguous_faces():
+    f = S.example_volume("noise", size=24)
+    v, t = S.marching_cubes(f.values, 0.1, f.spacing, f.origin, table="classic")
+    v2, t2 = S.marching_cubes(f.values, 0.1, f.spacing, f.origin)
+    assert_watertight_and_oriented(t2)
+    rims = rim_edges(t)
+    assert len(rims) > 0
+    # the same crossed grid edges, the same vertices (the consistent table may add centres)
+    np.testing.assert_array_equal(v, v2[:len(v)])
+    # each rim edge joins two crossings on one cell face whose corners alternate above/below
+    idx = (v - np.asarray(f.origin)) / np.asarray(f.spacing)       # index coordinates
+    for a, b in rims:
+        pa, pb = idx[a], idx[b]
+        shared = [k for k in range(3) if abs(pa[k] - round(pa[k])) < 1e-9
+                  and abs(pb[k] - round(pb[k])) < 1e-9 and round(pa[k]) == round(pb[k])]
+        assert shared, "a rim edge inside a cube"
+        k = shared[0]
+        lo = np.floor(np.minimum(pa, pb) + 1e-9).astype(int)
+        others = [m for m in range(3) if m != k]
+        corner = lambda du, dv: f.values[tuple(np.array(  # noqa: E731  (z, y, x) order
+            [lo[m] + (du if m == others[0] else dv if m == others[1] else 0)
+             if m != k else int(round(pa[k])) for m in range(3)])[::-1])]
+        above = [corner(0, 0) >= 0.1, corner(1, 0) >= 0.1, corner(1, 1) >= 0.1,
+                 corner(0, 1) >= 0.1]
+        assert above[0] == above[2] != above[1] == above[3], "a hole on a plain face"
+    # holes cost a little area; otherwise the same surface as scikit-image's
+    sv, sf = skimage_mesh(f.values, 0.1, f.spacing, f.origin, "lewiner")
+    assert S.surface_area(v, t) == pytest.approx(measure.mesh_surface_area(sv, sf), rel=0.02)
+
+
+def test_classic_table_decides_each_cube_by_its_corner_count():
+    gen = rng(81)
+    for case in range(256):
+        values = np.where((case >> np.arange(8)) & 1, gen.uniform(0.6, 1.0, 8),
+                          gen.uniform(0.0, 0.4, 8))
+        vol = np.zeros((2, 2, 2))
+        for k, (x, y, z) in enumerate(S.CUBE_CORNERS):
+            vol[z, y, x] = values[k]
+        _, tris = S.marching_cubes(vol, 0.5, table="classic")
+        many = bin(case).count("1") > 4
+        assert len(tris) == len(S.cube_triangles(case, 63 if many else 0))
+
+
+def test_marching_cubes_table_bad_input():
+    with pytest.raises(ValueError, match="table must be one of"):
+        S.marching_cubes(np.ones((3, 3, 3)), 0.5, table="lewiner")
+
+
+def test_noise_volume_is_smoothed_seeded_noise_with_a_low_border():
+    from scipy.ndimage import uniform_filter1d
+
+    f = S.example_volume("noise", size=20)
+    raw = np.random.default_rng(18).normal(size=(20, 20, 20))
+    for axis in range(3):
+        for _ in range(3):
+            raw = uniform_filter1d(raw, 3, axis=axis, mode="wrap")
+    expected = 2 * (raw - raw.min()) / (raw.max() - raw.min()) - 1
+    inner = (slice(1, -1),) * 3
+    np.testing.assert_allclose(f.values[inner], expected[inner], atol=1e-12)
+    border = np.ones(f.values.shape, bool)
+    border[inner] = False
+    assert (f.values[border] == -2.0).all()
+    assert f.level == 0.3 and f.spacing == (2 / 19,) * 3 and f.origin == (-1.0,) * 3
+    np.testing.assert_array_equal(S.example_volume("noise", size=20).values, f.values)
+    assert_watertight_and_oriented(S.marching_cubes(f.values, f.level)[1])
 
 
 # ---------------------------------------------------------------------------------------------
@@ -649,6 +786,80 @@ def test_volume_render_bad_input(kwargs, error, match):
     args = {"volume": np.ones((3, 3, 3)), "transfer": "ramp", **kwargs}
     with pytest.raises(error, match=match):
         S.volume_render(**args)
+
+
+# --- ray samples: the rays of one view sampled once, classified and composited later ---------
+
+@pytest.mark.parametrize("alpha", [0.05, 0.2, 0.6])
+def test_ray_samples_obey_beer_lambert_through_a_uniform_block(alpha):
+    # a 9 x 9 x 9 block seen along z: the central ray's path is 8 long; samples every h on
+    # common depth planes, each standing for h: (1 - alpha)^(count h), count h within a step
+    # of 8, and the colour of white over black is the opacity
+    rays = S.RaySamples(np.ones((9, 9, 9)), image_size=(5, 5), step=0.5, value_range=(0, 1))
+    img = rays.composite(constant_tf(alpha))
+    count = int(rays.inside.sum(axis=1)[12])
+    # (the table is single precision)
+    np.testing.assert_allclose(1 - img.alpha[2, 2], (1 - alpha) ** (count * 0.5), rtol=1e-4)
+    assert abs(count * 0.5 - 8) <= 0.5
+    np.testing.assert_allclose(img.rgb[2, 2], img.alpha[2, 2], rtol=1e-6)
+
+
+def test_ray_samples_composite_like_composite_of_the_classified_samples():
+    f = S.example_volume("ct", size=24)
+    tf = CM.transfer_preset("skin")
+    rotation = S.view_rotation(0.4, -0.3)
+    rays = S.RaySamples(f.values, rotation, (10, 12), 0.05, f.spacing, f.origin, "sphere",
+                        value_range=(0.0, 1.0))
+    assert rays.samples.shape == rays.inside.shape and rays.hit.shape == (120,)
+    # the samples are trilinear interpolations (scipy) at the common depth planes
+    inside = rays.inside
+    img = rays.composite(tf, background=(0.2, 0.3, 0.4))
+    # classify exactly (no table) and composite with the loop of scivis.composite
+    rgba = np.where(inside[..., None], tf(np.nan_to_num(rays.samples)), 0.0)
+    opacity = 1 - (1 - rgba[..., 3]) ** (rays.step / rays.unit)
+    color, alpha = S.composite(rgba[..., :3], np.clip(opacity, 0, 1))
+    got = np.column_stack([img.rgb.reshape(-1, 3), img.alpha.ravel()])[rays.hit]
+    expected = np.column_stack([color + (1 - alpha)[:, None] * [0.2, 0.3, 0.4], alpha])
+    assert np.abs(got - expected).max() < 5e-3                      # the 1024-entry table
+    assert (img.alpha.ravel()[~rays.hit] == 0).all()
+    assert img.samples + img.samples_saved == int(inside.sum())
+    # and the picture of the full ray caster, whose samples start where each ray enters
+    full = S.volume_render(f.values, tf, rotation, (10, 12), 0.05, f.spacing, f.origin,
+                           "sphere", early_termination=None, background=(0.2, 0.3, 0.4))
+    assert np.abs(img.rgb - full.rgb).mean() < 0.01
+    assert np.abs(img.alpha - full.alpha).mean() < 0.01
+
+
+def test_ray_samples_are_trilinear_samples_on_depth_planes():
+    vol = rng(12).uniform(0, 1, (6, 7, 8))
+    rot = S.view_rotation(0.3, 0.2)
+    rays = S.RaySamples(vol, rot, (6, 6), 0.4, (1.0, 0.5, 2.0), (1.0, 2.0, 3.0), "sphere")
+    lo, hi = np.array([1.0, 2.0, 3.0]), np.array([1.0, 2.0, 3.0]) + [7.0, 3.0, 10.0]
+    centre, radius = (lo + hi) / 2, np.linalg.norm(hi - lo) / 2
+    u, v = np.meshgrid(np.linspace(-radius, radius, 6), np.linspace(-radius, radius, 6))
+    pixel = np.flatnonzero(rays.hit)[7]
+    ray = centre + u.ravel()[pixel] * rot[0] + v.ravel()[pixel] * rot[1]
+    values = rays.samples[7][rays.inside[7]]
+    depths = [d for d in np.arange(radius, -radius - 1e-9, -0.4)
+              if np.all((ray + d * rot[2] >= lo - 1e-9) & (ray + d * rot[2] <= hi + 1e-9))]
+    points = ray + np.array(depths)[:, None] * rot[2]
+    np.testing.assert_allclose(values, trilinear_scipy(vol, points, (1.0, 0.5, 2.0),
+                                                       (1.0, 2.0, 3.0)), atol=1e-12)
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"step": 0.0}, "step must be positive"),
+    ({"value_range": (1, 1)}, "value_range must be \\(low, high\\) with low < high"),
+    ({"lut_size": 1}, "lut_size must be a whole number >= 2"),
+    ({"extent": "wide"}, "extent must be one of"),
+    ({"volume": np.ones((3, 3))}, "volume must be a 3D volume"),
+])
+def test_ray_samples_bad_input(kwargs, match):
+    args = {"volume": np.ones((3, 3, 3)), **kwargs}
+    with pytest.raises(ValueError, match=match):
+        S.RaySamples(**args)
+    with pytest.raises(ValueError, match="termination must lie in"):
+        S.RaySamples(np.ones((3, 3, 3))).composite("ramp", termination=0.0)
 
 
 def test_transfer_pair_and_colormap_name():

@@ -543,6 +543,68 @@ def test_bad_vectors_and_coefficients():
         S.halfway([1, 0, 0], [-2, 0, 0])
 
 
+# --- rasterize once, shade many times ----------------------------------------------------------
+
+@pytest.mark.parametrize("projection", ["perspective", "orthographic"])
+def test_barycentric_weights_interpolate_to_the_point_seen_at_the_pixel_centre(projection):
+    v, f = S.uv_sphere(segments=10, rings=5)
+    view = viewing.look_at([0.5, 0.3, 4], [-0.1, -0.05, -1], [0, 1, 0])
+    proj = (viewing.perspective(np.radians(35), 1.5, 1.0, 10.0) if projection == "perspective"
+            else viewing.orthographic(-1.5, 1.5, -1, 1, 1, 10))
+    width, height = 24, 16
+    buffers = S.barycentric_buffers(v, f, view, proj, width, height)
+    seen = buffers.ids >= 0
+    assert seen.sum() > 100 and (buffers.weights[~seen] == 0).all()
+    w = buffers.weights[seen]
+    assert (w >= -1e-9).all() and np.allclose(w.sum(axis=1), 1)
+    # the interpolated point lies in its face and projects onto the pixel centre
+    points = np.einsum("pk,pkc->pc", w, v[f[buffers.ids[seen]]])
+    clip = np.column_stack([points, np.ones(len(points))]) @ (proj @ view).T
+    ndc = clip[:, :3] / clip[:, 3:]
+    rows, cols = np.nonzero(seen)
+    np.testing.assert_allclose(ndc[:, 0], (cols + 0.5) / width * 2 - 1, atol=1e-9)
+    np.testing.assert_allclose(ndc[:, 1], (rows + 0.5) / height * 2 - 1, atol=1e-9)
+    np.testing.assert_allclose(buffers.depth[seen], (ndc[:, 2] + 1) / 2, atol=1e-9)
+    # the same visible faces as the plain z-buffer
+    zb = visibility.render_depth(v, f, view, proj, width, height)
+    np.testing.assert_array_equal(buffers.ids, zb.ids)
+
+
+@pytest.mark.parametrize("model", ["phong", "blinn"])
+@pytest.mark.parametrize("cull", [False, True])
+def test_render_shaded_on_cached_fragments_equals_a_fresh_render(model, cull):
+    v, f = S.uv_sphere(segments=14, rings=7)
+    view = viewing.look_at([0, 0.5, 4], [0, -0.12, -1], [0, 1, 0])
+    proj = viewing.perspective(np.radians(40), 1.0, 1.0, 10.0)
+    buffers = S.barycentric_buffers(v, f, view, proj, 40, 40, cull_back_faces=cull)
+    m = S.Material(ka=0.1, kd=0.6, ks=0.5, shininess=30)
+    for light in (S.directional_light([1, 1, 1]), S.point_light([2, 3, 4], intensity=1.5)):
+        for shading in ("flat", "gouraud", "phong"):
+            for normals in (None, v):
+                args = (v, f, view, proj, 40, 40, light, m)
+                kwargs = dict(shading=shading, model=model, normals=normals, background=0.3,
+                              cull_back_faces=cull)
+                fresh = S.render_shaded(*args, **kwargs)
+                cached = S.render_shaded(*args, **kwargs, fragments=buffers)
+                np.testing.assert_array_equal(cached.ids, fresh.ids)
+                np.testing.assert_allclose(cached.image, fresh.image, atol=1e-12)
+                np.testing.assert_allclose(cached.depth, fresh.depth, atol=1e-12)
+
+
+def test_render_shaded_rejects_fragments_of_another_size():
+    v, f = S.uv_sphere(segments=8, rings=4)
+    view = viewing.look_at([0, 0, 4], [0, 0, -1], [0, 1, 0])
+    proj = viewing.perspective(1.0, 1.0, 1.0, 10.0)
+    light = S.directional_light([0, 0, 1])
+    buffers = S.barycentric_buffers(v, f, view, proj, 8, 6)
+    with pytest.raises(ValueError, match="fragments must be the BarycentricBuffers"):
+        S.render_shaded(v, f, view, proj, 6, 8, light, fragments=buffers)
+    with pytest.raises(ValueError, match="fragments must be the BarycentricBuffers"):
+        S.render_shaded(v, f, view, proj, 8, 6, light, fragments=(buffers.ids,))
+    with pytest.raises(ValueError, match="faces refers to vertex"):
+        S.barycentric_buffers(v, f + 100, view, proj, 8, 6)
+
+
 def test_bad_meshes_and_occlusion_arguments():
     v, f = S.uv_sphere(segments=8, rings=4)
     view = viewing.look_at([0, 0, 4], [0, 0, -1], [0, 1, 0])

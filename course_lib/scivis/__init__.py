@@ -44,7 +44,8 @@ to inspect and draw step by step.
   cannot be cut that way) are fanned around an extra vertex at their centroid. (Inside a cube
   there remain rarer ambiguities, tunnels through the cube, that Chernyaev's Marching Cubes 33
   resolves; our choice there is one consistent option among the possible ones, and never
-  opens a hole.)
+  opens a hole.) ``marching_cubes(..., table="classic")`` uses the original table of Lorensen
+  and Cline instead, where each cube decides its ambiguous faces alone and holes can appear.
 
 **Volume rendering**
 
@@ -63,7 +64,8 @@ to inspect and draw step by step.
   once :math:`A` reaches a threshold: what lies behind can change the pixel by less than
   :math:`1 - A`. :func:`composite` does the compositing of given samples by hand, in either
   order; back to front, :math:`C \leftarrow \alpha_i c_i + (1 - \alpha_i) C`, gives the same
-  result but cannot stop early.
+  result but cannot stop early. :class:`RaySamples` samples the rays of one view once, so
+  that editing the transfer function only re-classifies and re-composites them.
 * :func:`mip`: **maximum intensity projection**, the largest sample along each ray (angiography
   uses it to show vessels).
 
@@ -80,7 +82,8 @@ to inspect and draw step by step.
   along the steepest ascent.
 
 Example data: :func:`example_field_2d`, :func:`example_volume` (a sphere, two blobs, a torus,
-a CT-like head phantom) and :func:`example_vector_field` (a vortex, a saddle, a source, ...).
+a CT-like head phantom, smooth noise) and :func:`example_vector_field` (a vortex, a saddle, a
+source, ...).
 
 Conventions
 -----------
@@ -158,7 +161,8 @@ from .contour_lines import (SQUARE_SADDLES_CENTRE_ABOVE, SQUARE_TABLE, isolines,
 from .isosurfaces import (CENTRE, CUBE_CORNERS, CUBE_EDGES, cube_triangles, enclosed_volume,
     gradient, marching_cubes, marching_cubes_cases, surface_area, _ambiguous_faces)
 from .grids import (interpolate)
-from .volume_rendering import (VolumeImage, composite, mip, view_rotation, volume_render)
+from .volume_rendering import (RaySamples, VolumeImage, composite, mip, view_rotation,
+    volume_render)
 from .flow import (streamline)
 from .glyphs import (arrows, hedgehog)
 
@@ -167,6 +171,7 @@ __all__ = [
     "CUBE_CORNERS",
     "CUBE_EDGES",
     "Field",
+    "RaySamples",
     "SQUARE_SADDLES_CENTRE_ABOVE",
     "SQUARE_TABLE",
     "VolumeImage",

@@ -3,7 +3,7 @@
 import numpy as np
 
 from .._validate import as_array, as_scalar, as_vector
-from ._common import _grid, _spacing
+from ._common import _choice, _grid, _spacing
 
 __all__ = ["SQUARE_SADDLES_CENTRE_ABOVE", "SQUARE_TABLE", "isolines", "join_segments",
     "marching_squares", "marching_squares_cases", "saddle_centre_above"]
@@ -137,7 +137,8 @@ def _square_points(f, level, rows, cols, edges):
     return np.stack([r0 + t * along_y, c0 + t * ~along_y], axis=-1)
 
 
-def marching_squares(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0)):
+def marching_squares(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0), saddles="midpoint",
+                     cells=None):
     r"""Isoline segments of a 2D field by marching squares.
 
     For each cell: the case index (:func:`marching_squares_cases`), the table
@@ -155,6 +156,14 @@ def marching_squares(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0)):
         :math:`(\Delta x, \Delta y)`, positive.
     origin : (float, float)
         :math:`(x_0, y_0)`, the position of ``field[0, 0]``.
+    saddles : {"midpoint", "opposite"}
+        How a saddle cell (case 5 or 10) pairs its four crossings: ``"midpoint"`` as the
+        midpoint decider says; ``"opposite"`` the other way, the reading the decider rejects
+        (the same four points, joined the other way round: what the isoline would look like
+        had the decider answered differently).
+    cells : array_like of bool, shape (ny - 1, nx - 1), optional
+        March only the cells where this is True (default all), e.g. the saddle cells
+        ``np.isin(marching_squares_cases(field, level), (5, 10))``.
 
     Returns
     -------
@@ -168,8 +177,8 @@ def marching_squares(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0)):
     Raises
     ------
     ValueError
-        For a field that is not 2D with at least 2 x 2 samples, NaN in the field, or a
-        non-positive spacing.
+        For a field that is not 2D with at least 2 x 2 samples, NaN in the field, a
+        non-positive spacing, an unknown `saddles` or a `cells` mask of the wrong shape.
 
     Examples
     --------
@@ -179,17 +188,36 @@ def marching_squares(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0)):
     >>> marching_squares([[2, 0], [0, 0]], 1)
     array([[[0.5, 0. ],
             [0. , 0.5]]])
+
+    A saddle cell, corners 0 and 2 above 1 (case 5), mean 1.5 >= 1: the midpoint decider joins
+    them through the centre (edge 0 to edge 1, edge 2 to edge 3); the rejected reading cuts
+    corners 0 and 2 off separately (edge 0 to edge 3, edge 2 to edge 1):
+
+    >>> marching_squares([[3, 0], [0, 3]], 1.0, saddles="opposite")
+    array([[[0.66666667, 0.        ],
+            [0.        , 0.66666667]],
+    <BLANKLINE>
+           [[0.33333333, 1.        ],
+            [1.        , 0.33333333]]])
     """
     f = _grid(field, "field", 2)
     c = as_scalar(level, "level")
     dx, dy = _spacing(spacing, 2)
     x0, y0 = as_vector(origin, "origin", 2)
+    _choice(saddles, "saddles", ("midpoint", "opposite"))
     cases = _square_cases(f, c).astype(np.intp)
     saddle = (cases == 5) | (cases == 10)
     ext = cases.copy()
     if saddle.any():
-        ext[saddle] += 16 * (_centres(f)[saddle] >= c)
+        centre_above = _centres(f)[saddle] >= c
+        ext[saddle] += 16 * (centre_above if saddles == "midpoint" else ~centre_above)
     segs = _SQUARE_LOOKUP[ext]                            # (ny-1, nx-1, 2, 2)
+    if cells is not None:
+        marched = np.asarray(cells)
+        if marched.shape != cases.shape or marched.dtype != bool:
+            raise ValueError(f"cells must be a boolean mask of shape {cases.shape} (one value "
+                             f"per cell), got shape {marched.shape} and type {marched.dtype}")
+        segs = np.where(marched[..., None, None], segs, -1)
     rows, cols, slot = np.nonzero(segs[..., 0] >= 0)
     edges = segs[rows, cols, slot]                        # (m, 2): from edge, to edge
     start = _square_points(f, c, rows, cols, edges[:, 0])

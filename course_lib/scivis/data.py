@@ -100,7 +100,7 @@ def example_field_2d(kind="hills", size=64):
     return Field(values, spacing, origin, level)
 
 
-_VOLUMES = ("sphere", "blobs", "torus", "ct")
+_VOLUMES = ("sphere", "blobs", "torus", "ct", "noise")
 
 
 def _smooth_inside(rho, eps):
@@ -122,7 +122,11 @@ def example_volume(kind="sphere", size=64):
       :func:`volume_render`): air 0, soft tissue 0.25, a bone shell (the skull, with two eye
       sockets) 0.8, brain 0.4, two fluid-filled ventricles 0.15 and a contrast-enhanced lesion
       1.0, with edges smoothed over about one voxel. Level 0.6 shows the skull and the lesion;
-      see :func:`course_lib.colormaps.transfer_preset` for transfer functions made for it.
+      see :func:`course_lib.colormaps.transfer_preset` for transfer functions made for it;
+    * ``"noise"``: smooth random values in [-1, 1] (seed 18: white noise blurred by three
+      passes of a box filter of 3 samples along each axis, scaled to [-1, 1]) with the outer
+      layer of samples set to -2, so that every isosurface above -2 closes before the border;
+      its many saddles make ambiguous faces for :func:`marching_cubes` at most levels.
 
     Returns
     -------
@@ -137,6 +141,9 @@ def example_volume(kind="sphere", size=64):
     ((5, 5, 5), (0.5, 0.5, 0.5), 0.0)
     >>> float(v.values[2, 2, 2]), float(v.values[2, 2, 4])
     (0.6, -0.4)
+    >>> n = example_volume("noise", size=16)
+    >>> float(n.values[0, 0, 0]), float(n.values[1:-1, 1:-1, 1:-1].max()), n.level
+    (-2.0, 1.0, 0.3)
     """
     _choice(kind, "kind", _VOLUMES)
     (x, y, z), spacing, origin = _cube_grid(size, 3)
@@ -149,6 +156,14 @@ def example_volume(kind="sphere", size=64):
         level = 0.5
     elif kind == "torus":
         values, level = 0.2 - np.sqrt((np.hypot(x, y) - 0.55) ** 2 + z ** 2), 0.0
+    elif kind == "noise":
+        values = np.random.default_rng(18).normal(size=x.shape)
+        for axis in range(3):
+            for _ in range(3):
+                values = (np.roll(values, 1, axis) + values + np.roll(values, -1, axis)) / 3
+        values = 2 * (values - values.min()) / (values.max() - values.min()) - 1
+        values[[0, -1]] = values[:, [0, -1]] = values[:, :, [0, -1]] = -2.0
+        level = 0.3
     else:
         eps = spacing[0]
 

@@ -5,7 +5,7 @@ from functools import lru_cache
 import numpy as np
 
 from .._validate import as_array, as_points, as_scalar, as_vector
-from ._common import _grid, _spacing, _whole
+from ._common import _choice, _grid, _spacing, _whole
 from .contour_lines import SQUARE_SADDLES_CENTRE_ABOVE, SQUARE_TABLE
 
 __all__ = ["CENTRE", "CUBE_CORNERS", "CUBE_EDGES", "cube_triangles", "enclosed_volume",
@@ -222,7 +222,27 @@ _CORNER_AXIS_ORDER = CUBE_CORNERS[:, ::-1]               # (z, y, x) offsets
 _EDGE_AXIS = np.argmax(CUBE_CORNERS[CUBE_EDGES[:, 1]] - CUBE_CORNERS[CUBE_EDGES[:, 0]], axis=1)
 
 
-def marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0)):
+#: Per case: corners above the level, and the bit mask of its ambiguous faces.
+_CORNERS_ABOVE = np.array([bin(case).count("1") for case in range(256)])
+_AMBIGUOUS_FACES = np.array([_ambiguous_faces(case) for case in range(256)], dtype=np.intp)
+
+
+def _decide_faces(case, base, corner_offset, flat, c):
+    """The asymptotic decider: per cell, the 6-bit mask of ambiguous faces joined through."""
+    connected = np.zeros(len(case), dtype=np.intp)
+    for f, cycle in enumerate(_CUBE_FACES):
+        bits = [(case >> q) & 1 for q in cycle]
+        ambiguous = (bits[0] == bits[2]) & (bits[1] == bits[3]) & (bits[0] != bits[1])
+        if ambiguous.any():
+            b = base[ambiguous]
+            f0, f1, f2, f3 = (flat[b + corner_offset[q]] for q in cycle)
+            saddle = (f0 * f2 - f1 * f3) / ((f0 + f2) - (f1 + f3))
+            connected[ambiguous] |= (saddle >= c).astype(np.intp) << f
+    return connected
+
+
+def marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0),
+                   table="consistent"):
     r"""The isosurface f = level of a volume as a triangle mesh, by marching cubes.
 
     Every cell gets its case index (:func:`marching_cubes_cases`); ambiguous faces are resolved
@@ -230,6 +250,14 @@ def marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0
     edges; each crossed grid edge gets one vertex, by linear interpolation
     :math:`p = p_0 + t (p_1 - p_0)`, :math:`t = (c - f_0) / (f_1 - f_0)`, shared by all cells
     around that edge. All of it is vectorized over the cells.
+
+    With ``table="classic"`` the ambiguous faces are resolved as in the original table of
+    Lorensen and Cline (1987): 15 classes of cases, the others derived by rotation and by
+    swapping above and below (complementary symmetry), so that a cube with at most 4 corners
+    above cuts those corners off and one with more cuts off the corners below. On an ambiguous
+    face (two diagonal corners above, two below) each cube then decides alone, whatever its
+    neighbour does; two cubes sharing the face may decide differently, and the surface has a
+    **hole** there (edges of one triangle only).
 
     Parameters
     ----------
@@ -242,6 +270,10 @@ def marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0
         :math:`(\Delta x, \Delta y, \Delta z)`, positive.
     origin : (float, float, float)
         :math:`(x_0, y_0, z_0)`.
+    table : {"consistent", "classic"}
+        ``"consistent"``: ambiguous faces by the asymptotic decider, the same answer for both
+        cubes sharing a face (watertight surfaces); ``"classic"``: each cube by its own corner
+        count, as above (holes possible; no long loops, so no centre vertices).
 
     Returns
     -------
@@ -259,8 +291,8 @@ def marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0
     Raises
     ------
     ValueError
-        For a volume that is not 3D with at least 2 samples per axis, NaN in it, or a
-        non-positive spacing.
+        For a volume that is not 3D with at least 2 samples per axis, NaN in it, a
+        non-positive spacing, or an unknown `table`.
 
     Examples
     --------
@@ -273,11 +305,27 @@ def marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0
     ((6, 3), (8, 3))
     >>> float(enclosed_volume(verts, tris))          # (4/3) * 0.5**3, a regular octahedron
     0.16666666666666666
+
+    Two cubes sharing an ambiguous face x = 1: the classic table lets the left one (3 corners
+    above) separate the face's above corners and the right one (5 above) join them, so edges of
+    one triangle only remain (a hole); the consistent table closes it:
+
+    >>> vol = np.zeros((2, 2, 3))
+    >>> vol[0, 0, 1] = vol[1, 1, 1] = 1.0                # the shared face x = 1: diagonal
+    >>> vol[0, 0, 0] = vol[1, 1, 2] = vol[1, 0, 2] = vol[0, 1, 2] = 1.0
+    >>> vol = np.pad(vol, 1)                              # a frame of zeros: surfaces close
+    >>> def rims(triangles):                              # edges used by one triangle only
+    ...     edges = np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]],
+    ...                                     triangles[:, [2, 0]]]), axis=1)
+    ...     return int((np.unique(edges, axis=0, return_counts=True)[1] == 1).sum())
+    >>> rims(marching_cubes(vol, 0.5, table="classic")[1]), rims(marching_cubes(vol, 0.5)[1])
+    (12, 0)
     """
     v = _grid(volume, "volume", 3)
     c = as_scalar(level, "level")
     sp = _spacing(spacing, 3)
     org = as_vector(origin, "origin", 3)
+    _choice(table, "table", ("consistent", "classic"))
     nz, ny, nx = v.shape
     cases = _cube_cases(v, c).ravel()
     active = np.flatnonzero((cases != 0) & (cases != 255))
@@ -290,20 +338,14 @@ def marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0
     corner_offset = (_CORNER_AXIS_ORDER[:, 0] * ny + _CORNER_AXIS_ORDER[:, 1]) * nx \
         + _CORNER_AXIS_ORDER[:, 2]
     flat = v.ravel()
-    # the asymptotic decider on the ambiguous faces
-    connected = np.zeros(len(case), dtype=np.intp)
-    for f, cycle in enumerate(_CUBE_FACES):
-        bits = [(case >> q) & 1 for q in cycle]
-        ambiguous = (bits[0] == bits[2]) & (bits[1] == bits[3]) & (bits[0] != bits[1])
-        if ambiguous.any():
-            b = base[ambiguous]
-            f0, f1, f2, f3 = (flat[b + corner_offset[q]] for q in cycle)
-            saddle = (f0 * f2 - f1 * f3) / ((f0 + f2) - (f1 + f3))
-            connected[ambiguous] |= (saddle >= c).astype(np.intp) << f
-    table, counts, centre_mask = _cube_lookup()
+    if table == "classic":                                # the cube's corner count decides
+        connected = np.where(_CORNERS_ABOVE[case] > 4, _AMBIGUOUS_FACES[case], 0)
+    else:                                                 # the asymptotic decider
+        connected = _decide_faces(case, base, corner_offset, flat, c)
+    lookup, counts, centre_mask = _cube_lookup()
     index = case | (connected << 8)
-    cell, slot = np.nonzero(np.arange(table.shape[1]) < counts[index][:, None])
-    edges = table[index[cell], slot]                      # (m, 3) cube edge numbers
+    cell, slot = np.nonzero(np.arange(lookup.shape[1]) < counts[index][:, None])
+    edges = lookup[index[cell], slot]                     # (m, 3) cube edge numbers
 
     def edge_ids(cells, e):                               # a number for every grid edge
         return 3 * (base[cells] + corner_offset[CUBE_EDGES[e, 0]]) + _EDGE_AXIS[e]

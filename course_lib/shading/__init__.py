@@ -73,7 +73,9 @@ with averaged vertex normals (:func:`vertex_normals`) and interpolates the *colo
 triangle (cheap, smooth, but highlights inside a triangle are lost or smeared, and their shape
 follows the mesh); *Phong* shading interpolates the *normals* (and positions) and evaluates the
 model at every pixel with the renormalized normal (highlights are round and sit where they
-should, at one evaluation per pixel).
+should, at one evaluation per pixel). :func:`barycentric_buffers` rasterizes a mesh once (the
+visible face and barycentric weights per pixel), so that ``render_shaded(...,
+fragments=...)`` re-shades it without a new z-buffer pass.
 
 **Ambient occlusion** (:func:`ambient_occlusion`). The fraction of the hemisphere above a point
 that is open to the sky, weighted by the cosine of the angle to the normal:
@@ -116,12 +118,14 @@ from .materials import (Light, Material, attenuation, colored_material, directio
     material_per_point, point_light)
 from .vectors import (halfway, reflect, view_directions)
 from .illumination import (PhongTerms, blinn_phong, phong)
-from .interpolated import (ShadedImage, face_normals, render_shaded, uv_sphere, vertex_normals)
+from .interpolated import (BarycentricBuffers, ShadedImage, barycentric_buffers, face_normals,
+    render_shaded, uv_sphere, vertex_normals)
 from .occlusion import (AmbientOcclusion, HeightField, ambient_occlusion,
     ambient_occlusion_closed_form, cosine_sample_hemisphere)
 
 __all__ = [
     "AmbientOcclusion",
+    "BarycentricBuffers",
     "HeightField",
     "Light",
     "Material",
@@ -130,6 +134,7 @@ __all__ = [
     "ambient_occlusion",
     "ambient_occlusion_closed_form",
     "attenuation",
+    "barycentric_buffers",
     "blinn_phong",
     "colored_material",
     "cosine_sample_hemisphere",

@@ -10,7 +10,8 @@ from ._common import _dot, _rgb
 from .illumination import blinn_phong, _lights, phong
 from .materials import Material
 
-__all__ = ["ShadedImage", "face_normals", "render_shaded", "uv_sphere", "vertex_normals"]
+__all__ = ["BarycentricBuffers", "ShadedImage", "barycentric_buffers", "face_normals",
+    "render_shaded", "uv_sphere", "vertex_normals"]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -172,6 +173,103 @@ def uv_sphere(radius=1.0, segments=32, rings=16, center=(0.0, 0.0, 0.0)):
     return vertices, np.concatenate(faces).astype(np.intp)
 
 
+class BarycentricBuffers(NamedTuple):
+    """The result of :func:`barycentric_buffers`: buffers of shape (height, width).
+
+    Attributes
+    ----------
+    ids : ndarray of int, shape (height, width)
+        The visible face, -1 for background.
+    weights : ndarray, shape (height, width, 3)
+        The perspective-correct barycentric weights of the pixel centre in that face, for its
+        corners in the order of the face's vertices (0 on background).
+    depth : ndarray, shape (height, width)
+        Viewport depth in [0, 1], inf on background.
+
+    Examples
+    --------
+    >>> from course_lib import viewing
+    >>> v, f = uv_sphere(segments=8, rings=4)
+    >>> V = viewing.look_at([0, 0, 4], [0, 0, -1], [0, 1, 0])
+    >>> P = viewing.perspective(np.radians(40), 1.0, 1.0, 10.0)
+    >>> barycentric_buffers(v, f, V, P, 8, 6).weights.shape
+    (6, 8, 3)
+    """
+    ids: np.ndarray
+    weights: np.ndarray
+    depth: np.ndarray
+
+
+def barycentric_buffers(vertices, faces, view, projection, width, height,
+                        cull_back_faces=False):
+    r"""Rasterize a mesh once: the visible face of every pixel and its barycentric weights.
+
+    The z-buffer (:func:`course_lib.visibility.render_depth`) draws every triangle with its
+    own three corners carrying the values (1, 0, 0), (0, 1, 0), (0, 0, 1): the interpolated
+    "colour" of a pixel is then exactly the perspective-correct barycentric weights
+    :math:`(w_0, w_1, w_2)` of the pixel centre in its visible triangle. Any per-vertex
+    quantity q (colours for Gouraud shading, positions and normals for Phong shading) is then
+    :math:`\sum_k w_k q_{f_k}` at that pixel, without rasterizing again: pass the result as
+    ``fragments`` to :func:`render_shaded` to re-shade a mesh whose view has not changed (new
+    material, light or model) at the cost of the illumination model alone.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+    faces : array_like of int, shape (m, 3)
+    view, projection : array_like, shape (4, 4)
+    width, height : int
+    cull_back_faces : bool
+
+    Returns
+    -------
+    BarycentricBuffers
+        ``ids``, ``weights`` and ``depth``.
+
+    Raises
+    ------
+    ValueError
+        For malformed input.
+
+    Examples
+    --------
+    The weights of every drawn pixel sum to 1 and interpolate the vertices to a point of the
+    visible face:
+
+    >>> from course_lib import viewing
+    >>> v, f = uv_sphere(segments=12, rings=6)
+    >>> V = viewing.look_at([0, 0, 4], [0, 0, -1], [0, 1, 0])
+    >>> P = viewing.perspective(np.radians(40), 1.0, 1.0, 10.0)
+    >>> buffers = barycentric_buffers(v, f, V, P, 16, 16)
+    >>> seen = buffers.ids >= 0
+    >>> bool(np.allclose(buffers.weights[seen].sum(axis=1), 1)), int(seen.sum()) > 50
+    (True, True)
+    """
+    v, f = _mesh(vertices, faces)
+    corners = np.tile(np.eye(3), (len(f), 1))
+    zb = visibility.render_depth(v[f].reshape(-1, 3), np.arange(3 * len(f)).reshape(-1, 3),
+                                 view, projection, width, height, values=corners,
+                                 cull_back_faces=cull_back_faces)
+    weights = np.where((zb.ids >= 0)[..., None], zb.image, 0.0)
+    return BarycentricBuffers(zb.ids, weights, zb.depth)
+
+
+class _Raster(NamedTuple):
+    ids: np.ndarray
+    image: np.ndarray
+    depth: np.ndarray
+
+
+def _from_buffers(buffers, f, values):
+    """What the z-buffer would give for per-vertex `values`, from the weights of `buffers`."""
+    if values is None:
+        return _Raster(buffers.ids, None, buffers.depth)
+    seen = buffers.ids >= 0
+    image = np.zeros(buffers.ids.shape + values.shape[1:])
+    image[seen] = np.einsum("pk,pkc->pc", buffers.weights[seen], values[f[buffers.ids[seen]]])
+    return _Raster(buffers.ids, image, buffers.depth)
+
+
 class ShadedImage(NamedTuple):
     """The result of :func:`render_shaded`: buffers of shape (height, width), row 0 at the bottom.
 
@@ -211,7 +309,7 @@ def _eye_and_view(view, projection):
 
 def render_shaded(vertices, faces, view, projection, width, height, lights, material=Material(),
                   shading="phong", model="phong", normals=None, ambient=1.0, background=0.0,
-                  cull_back_faces=False, two_sided=False):
+                  cull_back_faces=False, two_sided=False, fragments=None):
     r"""Render a triangle mesh with flat, Gouraud or Phong (per-pixel) shading.
 
     The z-buffer of :func:`course_lib.visibility.render_depth` decides the visible face of each
@@ -253,6 +351,10 @@ def render_shaded(vertices, faces, view, projection, width, height, lights, mate
     cull_back_faces : bool
     two_sided : bool
         Light back faces too (their normals flipped towards the viewer).
+    fragments : BarycentricBuffers, optional
+        The mesh already rasterized with this `view`, `projection`, size and culling
+        (:func:`barycentric_buffers`): the z-buffer is not run again, per-vertex values are
+        interpolated by its weights (the same pictures, up to rounding).
 
     Returns
     -------
@@ -282,6 +384,13 @@ def render_shaded(vertices, faces, view, projection, width, height, lights, mate
     ...                for i in np.unique(result.ids[seen]))
     >>> colours_per_face(flat), colours_per_face(smooth) > 5
     (1, True)
+
+    Rasterized once, shaded again with another light without a new z-buffer pass:
+
+    >>> buffers = barycentric_buffers(v, f, V, P, 32, 32)
+    >>> again = render_shaded(v, f, V, P, 32, 32, light, shading="phong", fragments=buffers)
+    >>> bool(np.allclose(again.image, smooth.image))
+    True
     """
     if shading not in ("flat", "gouraud", "phong"):
         raise ValueError(f"shading must be 'flat', 'gouraud' or 'phong', got {shading!r}")
@@ -294,6 +403,16 @@ def render_shaded(vertices, faces, view, projection, width, height, lights, mate
     bg = np.broadcast_to(_rgb(background, "background"), (3,))
     lights = _lights(lights)
     eye, v_const = _eye_and_view(view, projection)
+    if fragments is not None and (not isinstance(fragments, BarycentricBuffers)
+                                  or fragments.ids.shape != (height, width)):
+        raise ValueError(f"fragments must be the BarycentricBuffers of this mesh and view, of "
+                         f"shape (height, width) = {(height, width)}")
+
+    def raster(values=None):                  # the z-buffer, or the weights of `fragments`
+        if fragments is not None:
+            return _from_buffers(fragments, f, values)
+        return visibility.render_depth(v, f, view, projection, width, height, values=values,
+                                       cull_back_faces=cull_back_faces)
 
     def view_of(points):
         if eye is None:
@@ -311,8 +430,7 @@ def render_shaded(vertices, faces, view, projection, width, height, lights, mate
             raise ValueError(f"normals must hold one normal per vertex, shape {v.shape}, got "
                              f"{vn.shape}")
     if shading == "flat":
-        zb = visibility.render_depth(v, f, view, projection, width, height,
-                                     cull_back_faces=cull_back_faces)
+        zb = raster()
         seen = np.unique(zb.ids[zb.ids >= 0])
         colours = np.zeros((len(f), 3))
         if len(seen):
@@ -323,12 +441,10 @@ def render_shaded(vertices, faces, view, projection, width, height, lights, mate
         colours = np.zeros((len(v), 3))
         if used.any():
             colours[used] = shade(v[used], vn[used])
-        zb = visibility.render_depth(v, f, view, projection, width, height, values=colours,
-                                     cull_back_faces=cull_back_faces)
+        zb = raster(colours)
         image = zb.image
     else:
-        zb = visibility.render_depth(v, f, view, projection, width, height,
-                                     values=np.hstack([v, vn]), cull_back_faces=cull_back_faces)
+        zb = raster(np.hstack([v, vn]))
         image = np.zeros((zb.ids.shape[0], zb.ids.shape[1], 3))
         mask = zb.ids >= 0
         if mask.any():

@@ -21,7 +21,8 @@ triangles F, the Euler characteristic :math:`\chi = V - E + F` (2 per sphere-lik
 surface, 0 for a torus) and the **boundary edges**, used by one triangle only: holes, since the
 surfaces here never reach the volume's border. Our table resolves ambiguous faces consistently
 (the asymptotic decider) and has none; switch to the **classic table**, which decides each cube
-on its own (:func:`classic_marching_cubes`), and on the noisy volume holes appear, drawn in red.
+on its own (``marching_cubes(..., table="classic")``, :func:`classic_marching_cubes`), and on
+the noisy volume holes appear, drawn in red.
 """
 import io
 from dataclasses import dataclass
@@ -97,22 +98,13 @@ class State:
     show_cases: bool = True
 
 
-def _edge_points(f, level, rows, cols, edges):
-    """(x, y) index coordinates of the crossing on cell edge `edges` of cells (rows, cols)."""
-    a, b = CORNERS[edges], CORNERS[(edges + 1) % 4]
-    fa = f[rows + a[:, 1], cols + a[:, 0]]
-    fb = f[rows + b[:, 1], cols + b[:, 0]]
-    t = (level - fa) / (fb - fa)
-    return np.column_stack([cols + a[:, 0] + t * (b[:, 0] - a[:, 0]),
-                            rows + a[:, 1] + t * (b[:, 1] - a[:, 1])])
-
-
 def alternative_segments(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0)):
     """In each saddle cell (case 5 or 10), the segments of the pairing the decider rejected.
 
     Where :func:`course_lib.scivis.marching_squares` (midpoint decider) joins the two above
     corners through the cell, these segments separate them, and the other way round: the
-    other reading of the same four corner values.
+    other reading of the same four corner values. That is marching squares with
+    ``saddles="opposite"`` over the saddle cells only (``cells``).
 
     Returns
     -------
@@ -131,22 +123,9 @@ def alternative_segments(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0)):
            [[0.33333333, 1.        ],
             [1.        , 0.33333333]]])
     """
-    f = np.asarray(field, dtype=float)
-    cases = scivis.marching_squares_cases(f, level)
-    centre_above = scivis.saddle_centre_above(f, level)
-    rows, cols = np.nonzero((cases == 5) | (cases == 10))
-    out = []
-    for i, j in zip(rows, cols):
-        case = int(cases[i, j])
-        pairs = (scivis.SQUARE_TABLE[case] if centre_above[i, j]
-                 else scivis.SQUARE_SADDLES_CENTRE_ABOVE[case])
-        for a, b in pairs:
-            ends = _edge_points(f, level, np.array([i, i]), np.array([j, j]), np.array([a, b]))
-            out.append(ends)
-    if not out:
-        return np.zeros((0, 2, 2))
-    ij = np.array(out)
-    return np.asarray(origin, float) + ij * np.asarray(spacing, float)
+    cases = scivis.marching_squares_cases(field, level)
+    return scivis.marching_squares(field, level, spacing, origin, saddles="opposite",
+                                   cells=(cases == 5) | (cases == 10))
 
 
 def scene(state):
@@ -380,12 +359,11 @@ VOLUME_SIZE = 32
 
 @lru_cache(maxsize=None)
 def example_volume(kind="blobs", size=VOLUME_SIZE):
-    """A volume for the isosurface explorer, `size`^3 samples on [-1, 1]^3.
+    """A volume for the isosurface explorer: :func:`course_lib.scivis.example_volume`,
+    `size`^3 samples on [-1, 1]^3, cached and read-only.
 
-    The kinds of :func:`course_lib.scivis.example_volume`, and ``"noise"``: smooth random values
-    (seed 18: white noise blurred by three passes of a box filter along each axis, scaled to
-    [-1, 1]) with the outer layer of samples set to -2, so that every isosurface inside closes
-    before the border.
+    The kinds of :data:`VOLUMES`, among them ``"noise"`` (smooth random values with the
+    outer layer of samples at -2, so that every isosurface inside closes before the border).
 
     Returns
     -------
@@ -398,63 +376,25 @@ def example_volume(kind="blobs", size=VOLUME_SIZE):
     >>> v.values.shape, float(v.values[0, 0, 0])
     ((16, 16, 16), -2.0)
     """
-    if kind == "noise":
-        rng = np.random.default_rng(18)
-        values = rng.normal(size=(size, size, size))
-        for axis in range(3):
-            for _ in range(3):
-                values = (np.roll(values, 1, axis) + values + np.roll(values, -1, axis)) / 3
-        values = 2 * (values - values.min()) / (values.max() - values.min()) - 1
-        values[[0, -1]] = values[:, [0, -1]] = values[:, :, [0, -1]] = -2.0
-        h = 2.0 / (size - 1)
-        field = scivis.Field(values, (h, h, h), (-1.0, -1.0, -1.0), 0.3)
-    elif kind in VOLUMES:
-        field = scivis.example_volume(kind, size=size)
-    else:
+    if kind not in VOLUMES:
         raise ValueError(f"kind must be one of {VOLUMES}, got {kind!r}")
+    field = scivis.example_volume(kind, size=size)
     field.values.flags.writeable = False
     return field
 
 
-@lru_cache(maxsize=1)
-def _classic_table():
-    """Each case resolved on its own: ambiguous faces always separate the minority corners."""
-    entries = []
-    for case in range(256):
-        minority_above = bin(case).count("1") <= 4
-        entries.append(scivis.cube_triangles(case, 0 if minority_above else 63))
-    most = max(len(t) for t in entries)
-    table = np.full((256, most, 3), -1, dtype=np.intp)
-    for case, triangles in enumerate(entries):
-        table[case, :len(triangles)] = triangles
-    return table, np.array([len(t) for t in entries])
-
-
 def classic_marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0)):
-    r"""Marching cubes with a classic table: every cube decides its ambiguous faces alone.
+    """Marching cubes with the classic table: every cube decides its ambiguous faces alone.
 
-    The original table of Lorensen and Cline (1987) lists 15 classes of cases and derives the
-    others by rotation and by swapping above and below (complementary symmetry): a cube with
-    few corners above cuts those corners off, a cube with many cuts off the ones below. On an
-    ambiguous face (two diagonal corners above, two below) a cube therefore separates the above
-    corners when at most 4 of its corners are above, and the below corners otherwise, whatever
-    its neighbour does. Two cubes sharing the face may choose differently: the surface then
-    has a **hole**. This function builds such a table from
-    :func:`course_lib.scivis.cube_triangles` and assembles the mesh like
-    :func:`course_lib.scivis.marching_cubes` (one vertex per crossed grid edge, shared), so
-    that the two can be compared.
-
-    Parameters
-    ----------
-    volume : array_like, shape (nz, ny, nx)
-    level : float
-    spacing, origin : (float, float, float)
+    :func:`course_lib.scivis.marching_cubes` with ``table="classic"`` (the original table of
+    Lorensen and Cline: a cube with at most 4 corners above cuts them off, one with more cuts
+    off the corners below), so that two cubes sharing an ambiguous face may disagree and leave
+    a hole. The explorer's "classic" button.
 
     Returns
     -------
     vertices : ndarray, shape (n, 3)
     triangles : ndarray, shape (m, 3)
-        Wound as in :func:`course_lib.scivis.marching_cubes` (normals towards lower values).
 
     Examples
     --------
@@ -471,34 +411,7 @@ def classic_marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 
     >>> mesh_summary(*scivis.marching_cubes(vol, 0.5))["boundary"]
     0
     """
-    v = np.asarray(volume, dtype=float)
-    cases = scivis.marching_cubes_cases(v, level).ravel()
-    c = float(level)
-    nz, ny, nx = v.shape
-    active = np.flatnonzero((cases != 0) & (cases != 255))
-    if active.size == 0:
-        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.intp)
-    table, counts = _classic_table()
-    case = cases[active]
-    cz, rest = np.divmod(active, (ny - 1) * (nx - 1))
-    cy, cx = np.divmod(rest, nx - 1)
-    cell, slot = np.nonzero(np.arange(table.shape[1]) < counts[case][:, None])
-    edges = table[case[cell], slot]                                   # (m, 3) cube edges
-    start = scivis.CUBE_CORNERS[scivis.CUBE_EDGES[edges, 0]]          # (m, 3, 3) (x, y, z)
-    axis = np.argmax(scivis.CUBE_CORNERS[scivis.CUBE_EDGES[edges, 1]] - start, axis=-1)
-    ix, iy, iz = (cx[cell, None] + start[..., 0], cy[cell, None] + start[..., 1],
-                  cz[cell, None] + start[..., 2])
-    ids = 3 * ((iz * ny + iy) * nx + ix) + axis                       # a number per grid edge
-    unique, triangles = np.unique(ids, return_inverse=True)
-    point, ax = np.divmod(unique, 3)
-    flat = v.ravel()
-    f0, f1 = flat[point], flat[point + np.array([1, nx, nx * ny])[ax]]
-    pz, rest = np.divmod(point, nx * ny)
-    py, px = np.divmod(rest, nx)
-    coords = np.column_stack([px, py, pz]).astype(float)
-    coords[np.arange(len(point)), ax] += (c - f0) / (f1 - f0)
-    vertices = np.asarray(origin, float) + coords * np.asarray(spacing, float)
-    return vertices, triangles.reshape(-1, 3).astype(np.intp)
+    return scivis.marching_cubes(volume, level, spacing, origin, table="classic")
 
 
 def mesh_summary(vertices, triangles):
@@ -587,8 +500,8 @@ def scene_3d(state):
     data = example_volume(state.volume)
     if state.table not in TABLES:
         raise ValueError(f"table must be one of {TABLES}, got {state.table!r}")
-    march = scivis.marching_cubes if state.table == "consistent" else classic_marching_cubes
-    vertices, triangles = march(data.values, state.level, data.spacing, data.origin)
+    vertices, triangles = scivis.marching_cubes(data.values, state.level, data.spacing,
+                                                data.origin, table=state.table)
     normals = np.zeros_like(vertices)
     if len(vertices):
         g = scivis.interpolate(_gradient(state.volume), vertices, data.spacing, data.origin)

@@ -13,16 +13,17 @@ Bottom row: the same model and light on a triangle mesh of the sphere, rendered 
 with **flat** shading (one evaluation per triangle), **Gouraud** shading (evaluation at the
 vertices, colours interpolated) and **Phong** shading (normals interpolated, evaluation per
 pixel). The mesh is rasterized once per resolution: the z-buffer's perspective-correct
-barycentric weights of every pixel are kept (:func:`interpolation_buffers`), so a slider move
-only re-evaluates the illumination model (the same pictures as
-:func:`course_lib.shading.render_shaded`, a few milliseconds instead of a re-render).
+barycentric weights of every pixel are kept (:func:`course_lib.shading.barycentric_buffers`),
+so a slider move only re-evaluates the illumination model
+(``course_lib.shading.render_shaded(..., fragments=...)``, a few milliseconds instead of a
+re-render).
 """
 from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
 
-from .. import draw, shading, viewing, visibility
+from .. import draw, shading, viewing
 from ._base import Explorer, bind, degree_sliders, labelled, slider
 
 __all__ = ["MODELS", "PhongExplorer", "State", "interpolation_buffers", "light_direction",
@@ -125,15 +126,23 @@ def _camera():
 
 
 @lru_cache(maxsize=8)
+def _sphere_buffers(segments):
+    """The sphere mesh and its :func:`course_lib.shading.barycentric_buffers` (cached)."""
+    v, f = shading.uv_sphere(segments=segments, rings=max(segments // 2, 2))
+    view, proj = _camera()
+    buffers = shading.barycentric_buffers(v, f, view, proj, MESH_SIZE, MESH_SIZE)
+    for array in (v, f, *buffers):
+        array.setflags(write=False)
+    return v, f, buffers
+
+
 def interpolation_buffers(segments):
     """The mesh sphere rasterized once: visible face and perspective-correct weights per pixel.
 
     The sphere mesh (:func:`course_lib.shading.uv_sphere` with `segments` and ``segments // 2``
-    rings) is drawn by :func:`course_lib.visibility.render_depth` with every triangle given its
-    own three corners and the per-corner values (1, 0, 0), (0, 1, 0), (0, 0, 1): the z-buffer's
-    interpolated "colour" of a pixel is then exactly the perspective-correct barycentric weights
-    of the pixel in its visible triangle. Any per-vertex quantity (colours for Gouraud, positions
-    and normals for Phong) is then interpolated by one weighted sum, without rasterizing again.
+    rings) drawn once by :func:`course_lib.shading.barycentric_buffers`: any per-vertex
+    quantity (colours for Gouraud, positions and normals for Phong) is then interpolated by one
+    weighted sum, without rasterizing again (``render_shaded(..., fragments=...)``).
 
     Returns
     -------
@@ -150,47 +159,21 @@ def interpolation_buffers(segments):
     >>> len(f), bool(np.allclose(w[ids >= 0].sum(axis=1), 1))
     (48, True)
     """
-    v, f = shading.uv_sphere(segments=segments, rings=max(segments // 2, 2))
+    v, f, buffers = _sphere_buffers(segments)
+    return v, f, buffers.ids, buffers.weights
+
+
+def _interpolated(segments, model, light, material):
+    """Flat, Gouraud and Phong pictures of the mesh sphere by
+    :func:`course_lib.shading.render_shaded` on its cached buffers (exact sphere normals)."""
+    v, f, buffers = _sphere_buffers(segments)
     view, proj = _camera()
-    corners = np.tile(np.eye(3), (len(f), 1))
-    zb = visibility.render_depth(v[f].reshape(-1, 3), np.arange(3 * len(f)).reshape(-1, 3),
-                                 view, proj, MESH_SIZE, MESH_SIZE, values=corners)
-    weights = np.where((zb.ids >= 0)[..., None], zb.image, 0.0)
-    for array in (v, f, zb.ids, weights):
-        array.setflags(write=False)
-    return v, f, zb.ids, weights
-
-
-def _views(points):
-    d = EYE - points
-    return d / np.linalg.norm(d, axis=-1, keepdims=True)
-
-
-def _interpolated(segments, illuminate, light, material):
-    """Flat, Gouraud and Phong pictures of the mesh sphere (what render_shaded draws)."""
-    v, f, ids, w = interpolation_buffers(segments)
-    seen = ids >= 0
-    face = ids[seen]
-    images = {}
-    # flat: one evaluation per visible face, at its centroid, with the face normal
-    visible = np.unique(face)
-    colours = np.zeros((len(f), 3))
-    centroids = v[f[visible]].mean(axis=1)
-    colours[visible] = illuminate(centroids, shading.face_normals(v, f[visible]),
-                                  _views(centroids), light, material).total
-    images["flat"] = colours[face]
-    # Gouraud: evaluate at the vertices (exact sphere normals), interpolate the colours
-    vertex_colours = illuminate(v, v, _views(v), light, material).total
-    images["gouraud"] = np.einsum("pk,pkc->pc", w[seen], vertex_colours[f[face]])
-    # Phong: interpolate position and normal, evaluate per pixel (the normal renormalized)
-    corner_points = v[f[face]]
-    points = np.einsum("pk,pkc->pc", w[seen], corner_points)
-    images["phong"] = illuminate(points, points, _views(points), light, material).total
     out = {}
-    for name, values in images.items():
-        picture = np.full((MESH_SIZE, MESH_SIZE, 3), BACKGROUND)
-        picture[seen] = np.clip(values, 0.0, 1.0)
-        out[name] = picture
+    for name in SHADINGS:
+        picture = shading.render_shaded(v, f, view, proj, MESH_SIZE, MESH_SIZE, light, material,
+                                        shading=name, model=model, normals=v,
+                                        background=BACKGROUND, fragments=buffers)
+        out[name] = np.clip(picture.image, 0.0, 1.0)
     return out, len(f), len(v)
 
 
@@ -237,7 +220,8 @@ def scene(state):
     highlight = None
     if norm > 1e-9 and h[2] / norm > 0:
         highlight = (float(round(h[0] / norm, 12)), float(round(h[1] / norm, 12)))
-    pictures, triangles, vertices = _interpolated(state.segments, illuminate, light, material)
+    pictures, triangles, vertices = _interpolated(
+        state.segments, "phong" if state.model == "Phong" else "blinn", light, material)
     out.update(pictures)
     angle = np.degrees(np.arccos(np.clip(direction[2], -1, 1)))
     over = float(terms.total.max())

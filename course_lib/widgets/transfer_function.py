@@ -189,25 +189,16 @@ def render(tf, volume=None, azimuth=-30.0, elevation=10.0):
         extent=EXTENT, unit_length=voxel)
 
 
-class RaySamples:
-    r"""The data values along every ray of one view, sampled once: a fast preview renderer.
+class RaySamples(scivis.RaySamples):
+    r"""The data values along every ray of one view, sampled once: the editor's preview.
 
-    Sampling a volume along the rays (trilinear interpolation) is most of the work of ray
-    casting, and it does not depend on the transfer function: only the *classification* of the
-    samples (value -> colour and opacity) and their compositing do. While the student drags a
-    control point the view stays the same, so the editor samples the rays of the view once
-    and, on every move, only looks the samples up in the new transfer function and composites
-    them front to back, all rays at once:
-
-    .. math:: \alpha_k' = 1 - (1 - \alpha_k)^{h/\ell}, \quad
-              T_k = \prod_{j<k} (1 - \alpha_j'), \quad
-              C = \sum_k T_k\, \alpha_k'\, c_k, \quad A = 1 - T_n .
-
-    The rays are those of :func:`course_lib.scivis.volume_render` (orthographic, looking down
-    -z of the view frame) over :data:`EXTENT`, with samples every `step` along each ray from the
-    front of the volume's bounding sphere to its back; samples outside the volume's box count
-    as empty (opacity 0). There is no early ray termination: every sample is composited (the
-    count of those it would have skipped is reported instead).
+    :class:`course_lib.scivis.RaySamples` for the editor's view: orthographic, turned by
+    `azimuth` and `elevation` (degrees, :func:`course_lib.scivis.view_rotation`) over
+    :data:`EXTENT`, a sample every `step` voxels, the opacity per voxel, a classification
+    table of :data:`LUT_SIZE` entries over [0, 1]. While the student drags a control point the
+    view stays the same, so the editor samples the rays once and, on every move, only looks
+    the samples up in the new transfer function and composites them
+    (:meth:`~course_lib.scivis.RaySamples.composite`).
 
     Parameters
     ----------
@@ -230,66 +221,10 @@ class RaySamples:
 
     def __init__(self, volume, azimuth=-30.0, elevation=10.0, image_size=PREVIEW_SIZE,
                  step=PREVIEW_STEP):
-        values = np.asarray(volume.values, float)
-        sp, org = np.asarray(volume.spacing, float), np.asarray(volume.origin, float)
-        rot = scivis.view_rotation(*np.radians([azimuth, elevation]))
-        nz, ny, nx = values.shape
-        lo, hi = org, org + sp * np.array([nx - 1, ny - 1, nz - 1])
-        centre, radius = 0.5 * (lo + hi), 0.5 * np.linalg.norm(hi - lo)
-        self.unit = float(sp.min())
-        self.step = float(step) * self.unit
-        depth = np.arange(radius, -radius - 1e-9, -self.step)          # front to back
-        height, width = image_size
-        u, v = np.meshgrid(np.linspace(EXTENT[0], EXTENT[1], width),
-                           np.linspace(EXTENT[2], EXTENT[3], height))
-        points = (centre + u.reshape(-1, 1, 1) * rot[0] + v.reshape(-1, 1, 1) * rot[1]
-                  + depth[None, :, None] * rot[2])
-        slack = 1e-9 * radius
-        inside = np.all((points >= lo - slack) & (points <= hi + slack), axis=-1)
-        self.shape = (height, width)
-        self.hit = inside.any(axis=1)
-        used = inside[self.hit].any(axis=0)                  # drop depths no ray uses
-        first, last = np.argmax(used), len(used) - np.argmax(used[::-1])
-        inside = inside[self.hit, first:last]
-        samples = scivis.interpolate(values, points[self.hit, first:last], sp, org)
-        self.samples = np.where(inside, samples, np.nan)
-        self.inside = inside
-        # classification by a lookup table of LUT_SIZE entries over [0, 1]: each sample's
-        # entry is found once here, so a new transfer function costs one gather
-        index = np.rint(np.clip(samples, 0.0, 1.0) * (LUT_SIZE - 1)).astype(np.intp)
-        self._index = np.where(inside, index, LUT_SIZE)
-
-    def composite(self, tf, background=(0.0, 0.0, 0.0), termination=0.99):
-        """Classify the samples through `tf` (4 channels) and composite them front to back.
-
-        The transfer function is tabulated at :data:`LUT_SIZE` values over [0, 1] and each
-        sample takes the entry nearest to its value (an error below the function's slope /
-        2046); the opacity correction is applied to the table.
-
-        Returns
-        -------
-        course_lib.scivis.VolumeImage
-            ``samples`` counts the samples inside the volume, ``samples_saved`` those that
-            early ray termination at opacity `termination` would have skipped.
-        """
-        table = np.zeros((LUT_SIZE + 1, 4), np.float32)       # the last row: outside, empty
-        table[:-1] = tf.lookup_table(LUT_SIZE, (0.0, 1.0))
-        table[:-1, 3] = 1.0 - (1.0 - table[:-1, 3]) ** (self.step / self.unit)  # per step
-        alpha = table[:, 3][self._index]
-        through = np.cumprod(1.0 - alpha, axis=1)                 # T after each sample
-        before = np.ones_like(through)
-        before[:, 1:] = through[:, :-1]
-        weight = before * alpha
-        color = np.stack([(weight * table[:, c][self._index]).sum(axis=1) for c in range(3)],
-                         axis=1).astype(float)
-        opacity = (1.0 - through[:, -1]).astype(float)
-        saved = int((self.inside & (before <= 1.0 - termination)).sum())
-        pixels = np.prod(self.shape)
-        out_c, out_a = np.zeros((pixels, 3)), np.zeros(pixels)
-        out_c[self.hit], out_a[self.hit] = color, opacity
-        rgb = out_c + (1.0 - out_a)[:, None] * np.asarray(background, float)
-        return scivis.VolumeImage(rgb.reshape(*self.shape, 3), out_a.reshape(self.shape),
-                                  int(self.inside.sum()) - saved, saved)
+        voxel = float(min(volume.spacing))
+        super().__init__(volume.values, scivis.view_rotation(*np.radians([azimuth, elevation])),
+                         image_size, float(step) * voxel, volume.spacing, volume.origin,
+                         EXTENT, unit_length=voxel, value_range=(0.0, 1.0), lut_size=LUT_SIZE)
 
 
 @lru_cache(maxsize=8)
