@@ -446,3 +446,28 @@ def test_sign_free_answers_recognise_negated_mistakes():
 
 def test_feedback_keeps_the_case_of_the_answer_name():
     assert diagnose_matrix(M, M, what="the matrix M").message == "The matrix M is right."
+
+
+def test_numbers_no_slip_explains_get_the_hint_once():
+    # diagnose_parts ends its "some of your numbers are off" with the hint, and DrawnExercise.check
+    # adds the hint to an unexplained verdict: a student was told the same thing twice
+    import importlib
+
+    checked = 0
+    for chapter in ("ch04", "ch05", "ch06", "ch07", "ch12", "ch14", "ch15", "ch18"):
+        module = importlib.import_module(f"course_lib.exercises.{chapter}")
+        for name in module.__all__:
+            cls = getattr(module, name)
+            if not (isinstance(cls, type) and issubclass(cls, DrawnExercise)):
+                continue
+            ex = cls(seed=0)
+            parts = getattr(ex, "_parts", None)
+            parts = parts() if callable(parts) else parts
+            if not ex.hint or not isinstance(parts, list) \
+                    or not all(np.ndim(expected) == 0 for _, expected, _ in parts):
+                continue
+            feedback = ex.check([float(expected) + 1000.5 for _, expected, _ in parts])
+            assert feedback.status == "wrong", (name, feedback)
+            assert feedback.message.count(ex.hint) <= 1, (name, feedback.message)
+            checked += 1
+    assert checked >= 10, f"only {checked} exercises answer in several numbers"
