@@ -513,12 +513,14 @@ def simplify_qem(vertices, faces, target_faces, record=True, max_angle=np.pi / 2
     2. For every edge, the position :math:`\bar v` minimizing :math:`\bar v^T (Q_1 + Q_2) \bar v`
        and that cost (:func:`optimal_position`); all edges go into a heap.
     3. Pop the cheapest edge. Skip it if it is stale (an end point changed since it was pushed:
-       lazy deletion); refuse it if the collapse would break the mesh (the link condition,
-       a face normal turning by more than `max_angle` or a face becoming degenerate, a vertex
-       left with fewer than 3 neighbours, the boundary rules; see the module notes); refused
-       edges are retried once their neighbourhood changes. Else collapse it: vertex
-       ``removed`` merges into ``kept`` at :math:`\bar v`, the two faces of the edge vanish,
-       :math:`Q_{kept} \leftarrow Q_1 + Q_2`, and the edges at ``kept`` get new costs.
+       lazy deletion). Refuse it if the collapse would break the mesh, checked in this order
+       (the first failure names the refusal in :attr:`SimplificationRecord.rejections`): the
+       link condition, a vertex left with fewer than 3 neighbours (valence), a face normal
+       turning by more than `max_angle` or a face becoming degenerate (fold); the boundary
+       rules are kept throughout (see the module notes). Refused edges are retried once their
+       neighbourhood changes. Else collapse it: vertex ``removed`` merges into ``kept`` at
+       :math:`\bar v`, the two faces of the edge vanish, :math:`Q_{kept} \leftarrow Q_1 + Q_2`;
+       then requeue: the edges at ``kept`` get new costs.
     4. Stop at `target_faces` faces (or one fewer: a collapse removes two) or when no edge can
        be collapsed.
 
