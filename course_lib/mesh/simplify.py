@@ -351,23 +351,26 @@ class _Collapser:
         return heap
 
     def pop_cheapest(self):
-        """Pop the cheapest entry of the heap: the candidate :class:`_Edge`, or None when the
-        entry is stale (lazy deletion) or no longer an edge. A boundary end point is `kept`."""
-        entry = heapq.heappop(self.heap)
-        _, _, u, w, vu, vw, _ = entry
-        alive, version, on_border = self.alive, self.version, self.on_border
-        if not (alive[u] and alive[w]) or version[u] != vu or version[w] != vw:
-            return None                                         # stale entry
-        if on_border[w]:
-            u, w = w, u                                         # keep the boundary vertex
-        if on_border[w]:
-            return None                       # two boundary end points: never queued anyway
-        shared = self.faces_at[u] & self.faces_at[w]
-        if len(shared) != 2:
-            return None                                         # no longer an edge
-        F = self.faces
-        f1, f2 = shared
-        return _Edge(entry, u, w, shared, {*F[f1], *F[f2]} - {u, w})
+        """Pop heap entries until one is a live edge; return it as an :class:`_Edge` (a boundary
+        end point is `kept`), or None when the heap runs empty. Skipped: stale entries (an end
+        point merged or changed since the entry was pushed: lazy deletion), no longer edges."""
+        heap, alive, version, on_border = self.heap, self.alive, self.version, self.on_border
+        faces_at, F = self.faces_at, self.faces
+        while heap:
+            entry = heapq.heappop(heap)
+            _, _, u, w, vu, vw, _ = entry
+            if not (alive[u] and alive[w]) or version[u] != vu or version[w] != vw:
+                continue                                        # stale entry
+            if on_border[w]:
+                u, w = w, u                                     # keep the boundary vertex
+            if on_border[w]:
+                continue                      # two boundary end points: never queued anyway
+            shared = faces_at[u] & faces_at[w]
+            if len(shared) != 2:
+                continue                                        # no longer an edge
+            f1, f2 = shared
+            return _Edge(entry, u, w, shared, {*F[f1], *F[f2]} - {u, w})
+        return None
 
     def link_condition_holds(self, edge):
         """The end points' common neighbours are exactly the two vertices opposite the edge
@@ -571,10 +574,10 @@ def simplify_qem(vertices, faces, target_faces, record=True, max_angle=np.pi / 2
     if not 0 < angle <= np.pi:
         raise ValueError(f"max_angle must be in (0, pi] radians, got {max_angle!r}")
     qem = _Collapser(mesh, tri, float(np.cos(angle)), record)     # steps 1 and 2
-    while qem.n_faces > target and qem.heap:                      # step 3, until step 4
-        edge = qem.pop_cheapest()
-        if edge is None:                                          # stale: lazy deletion
-            continue
+    while qem.n_faces > target:                                   # step 3, until step 4
+        edge = qem.pop_cheapest()                                 # skips the stale entries
+        if edge is None:                                          # no edge left
+            break
         if not qem.link_condition_holds(edge):
             qem.refuse(edge, "link condition")
         elif not qem.valence_ok(edge):
