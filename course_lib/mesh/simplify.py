@@ -301,6 +301,7 @@ class _Collapser:
     """
 
     def __init__(self, mesh, tri, cos_limit, record):
+        """Steps 1 and 2: the quadrics, the connectivity as sets, every edge in the heap."""
         pos = mesh.vertices.copy()
         n, m = len(pos), len(tri)
         Q = vertex_quadrics(pos, tri)
