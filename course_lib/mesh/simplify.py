@@ -273,6 +273,241 @@ def _target10(q, p1, p2):
     best = min((_cost10(q, *c), i) for i, c in enumerate((p1, p2, mid)))
     return list((p1, p2, mid)[best[1]]), max(best[0], 0.0)
 
+class _Edge:
+    """A candidate collapse popped from the heap: `removed` merges into `kept` at `position`.
+
+    `faces` are the edge's two faces, `opposite` their two corners off the edge, `entry` the
+    heap entry (pushed back if the collapse is refused and the neighbourhood changes later).
+    """
+    __slots__ = ("entry", "cost", "kept", "removed", "position", "faces", "opposite")
+
+    def __init__(self, entry, kept, removed, faces, opposite):
+        self.entry, self.cost, self.position = entry, entry[0], entry[6]
+        self.kept, self.removed, self.faces, self.opposite = kept, removed, faces, opposite
+
+
+class _Collapser:
+    """The state of :func:`simplify_qem` and its steps, one method each.
+
+    The state is kept in plain Python lists and sets (a handful of numbers change per collapse,
+    where Python floats are faster than numpy calls; see ``geometry._UPPER``): per vertex its
+    position, its quadric (10 numbers), the set of its faces and of its neighbours (the one-ring),
+    whether it is on the boundary, alive, and a version counting its changes; per face its three
+    corners and whether it is alive; the heap of candidate edges and the refused ones.
+
+    A heap entry is ``(cost, counter, u, w, version of u, version of w, position)``: the unique
+    counter breaks ties between equal costs by the order the entries were made, and the versions
+    recognise a stale entry (an end point changed since it was pushed: lazy deletion).
+    """
+
+    def __init__(self, mesh, tri, cos_limit, record):
+        """Steps 1 and 2: the quadrics, the connectivity as sets, every edge in the heap."""
+        pos = mesh.vertices.copy()
+        n, m = len(pos), len(tri)
+        Q = vertex_quadrics(pos, tri)
+        self.faces = F = tri.tolist()
+        self.faces_at = vfaces = [set() for _ in range(n)]
+        for f, (a, b, c) in enumerate(F):
+            vfaces[a].add(f)
+            vfaces[b].add(f)
+            vfaces[c].add(f)
+        boundary = mesh.boundary_vertices()
+        self.on_border = boundary.tolist()
+        self.version = [0] * n
+        self.alive = [True] * n
+        self.face_alive = [True] * m
+        self.n_faces = m
+        extent = float(np.ptp(pos, axis=0).max()) if n else 1.0
+        self.eps2 = (1e-12 * max(extent, 1e-150) ** 2) ** 2  # squared |normal|, degenerate face
+        self.cos_limit = cos_limit
+        self.record = record
+        self.rejections = {"link condition": 0, "flipped face": 0, "valence": 0}
+        self.collapses = []
+        edges = mesh.edges()
+        self.heap = self._every_edge(edges, boundary, pos, Q)
+        self.counter = len(self.heap)
+        self.positions = pos.tolist()
+        self.quadrics = Q[:, _UPPER[0], _UPPER[1]].tolist()
+        self.refused = {}                  # edge key -> heap entry refused, retried after changes
+        self.refused_at = [set() for _ in range(n)]
+        self.ring = nbr = [set() for _ in range(n)]       # the one-ring of each vertex
+        for a, b in edges.tolist():
+            nbr[a].add(b)
+            nbr[b].add(a)
+
+    @staticmethod
+    def _every_edge(edges, boundary, pos, Q):
+        """The first heap: every edge with its optimal position and cost, all at once (numpy);
+        later a few edges per collapse get the same maths in Python floats (:meth:`requeue`)."""
+        e = edges[~(boundary[edges[:, 0]] & boundary[edges[:, 1]])]   # boundary edges, chords
+        a, b = e[:, 0], e[:, 1]
+        x, cost = _optimal(Q[a] + Q[b], pos[a], pos[b])
+        fix_a, fix_b = boundary[a], boundary[b]             # a boundary end point stays put
+        x[fix_a], x[fix_b] = pos[a[fix_a]], pos[b[fix_b]]
+        fixed = fix_a | fix_b
+        cost[fixed] = np.maximum(collapse_cost(Q[a[fixed]] + Q[b[fixed]], x[fixed]), 0.0)
+        heap = [(c, i, u, w, 0, 0, p) for i, (c, u, w, p)
+                in enumerate(zip(cost.tolist(), a.tolist(), b.tolist(), x.tolist()))]
+        heapq.heapify(heap)
+        return heap
+
+    def pop_cheapest(self):
+        """Pop heap entries until one is a live edge; return it as an :class:`_Edge` (a boundary
+        end point is `kept`), or None when the heap runs empty. Skipped: stale entries (an end
+        point merged or changed since the entry was pushed: lazy deletion), no longer edges."""
+        heap, alive, version, on_border = self.heap, self.alive, self.version, self.on_border
+        faces_at, F = self.faces_at, self.faces
+        while heap:
+            entry = heapq.heappop(heap)
+            _, _, u, w, vu, vw, _ = entry
+            if not (alive[u] and alive[w]) or version[u] != vu or version[w] != vw:
+                continue                                        # stale entry
+            if on_border[w]:
+                u, w = w, u                                     # keep the boundary vertex
+            if on_border[w]:
+                continue                      # two boundary end points: never queued anyway
+            shared = faces_at[u] & faces_at[w]
+            if len(shared) != 2:
+                continue                                        # no longer an edge
+            f1, f2 = shared
+            return _Edge(entry, u, w, shared, {*F[f1], *F[f2]} - {u, w})
+        return None
+
+    def link_condition_holds(self, edge):
+        """The end points' common neighbours are exactly the two vertices opposite the edge
+        (else the collapse pinches the surface into a non-manifold one)."""
+        return self.ring[edge.kept] & self.ring[edge.removed] == edge.opposite
+
+    def valence_ok(self, edge):
+        """Every vertex keeps at least 3 neighbours (a boundary vertex at least 2): the merged
+        vertex, and the two opposite vertices, which each lose one."""
+        nbr, on_border = self.ring, self.on_border
+        return not (len(nbr[edge.kept]) + len(nbr[edge.removed]) - 4 < 3 or
+                    any(len(nbr[x]) - 1 < (2 if on_border[x] else 3) for x in edge.opposite))
+
+    def folds(self, edge, position):
+        """Would moving both end points to `position` turn the normal of a surviving face
+        around them by more than max_angle (or make it degenerate)?
+
+        Each face has exactly one moving corner m; with the other two b, c (in the face's
+        order after m) the normal is (c - b) x (m - b), before and after the move.
+        """
+        u, w = edge.kept, edge.removed
+        F, P, eps2, cos_limit = self.faces, self.positions, self.eps2, self.cos_limit
+        px, py, pz = position
+        for f in (self.faces_at[u] | self.faces_at[w]) - edge.faces:
+            a, b, c = F[f]
+            if a == u or a == w:
+                m, b, c = P[a], P[b], P[c]
+            elif b == u or b == w:
+                m, b, c = P[b], P[c], P[a]
+            else:
+                m, b, c = P[c], P[a], P[b]
+            bx, by, bz = b
+            ex, ey, ez = c[0] - bx, c[1] - by, c[2] - bz
+            mx, my, mz = m[0] - bx, m[1] - by, m[2] - bz
+            ox, oy, oz = ey * mz - ez * my, ez * mx - ex * mz, ex * my - ey * mx
+            mx, my, mz = px - bx, py - by, pz - bz
+            nx, ny, nz = ey * mz - ez * my, ez * mx - ex * mz, ex * my - ey * mx
+            len_new = nx * nx + ny * ny + nz * nz
+            if len_new <= eps2:
+                return True
+            len_old = ox * ox + oy * oy + oz * oz
+            if len_old > eps2 and (ox * nx + oy * ny + oz * nz <=
+                                   cos_limit * (len_old * len_new) ** 0.5):
+                return True
+        return False
+
+    def refuse(self, edge, why):
+        """Count the refusal and keep the entry, to retry once the neighbourhood changes."""
+        self.rejections[why] += 1
+        u, w = edge.kept, edge.removed
+        key = (u, w) if u < w else (w, u)
+        self.refused[key] = edge.entry
+        self.refused_at[u].add(key)
+        self.refused_at[w].add(key)
+
+    def collapse(self, edge, position):
+        r"""Merge `removed` into `kept` at `position`: the edge's two faces vanish, the other
+        faces of `removed` are re-attached to `kept`, the one-rings are merged, the quadrics
+        added (:math:`Q_{kept} \leftarrow Q_1 + Q_2`) and both versions bumped."""
+        u, w, shared = edge.kept, edge.removed, edge.faces
+        F, vfaces, nbr = self.faces, self.faces_at, self.ring
+        for f in shared:
+            self.face_alive[f] = False
+            for x in F[f]:
+                vfaces[x].discard(f)
+        for f in vfaces[w]:
+            face = F[f]
+            face[face.index(w)] = u
+            vfaces[u].add(f)
+        vfaces[w] = set()
+        ring_u = nbr[u]
+        for x in nbr[w]:
+            if x != u:
+                nbr[x].discard(w)
+                nbr[x].add(u)
+        ring_u |= nbr[w]
+        ring_u.discard(u)
+        ring_u.discard(w)
+        nbr[w] = set()
+        self.alive[w] = False
+        self.positions[u] = position
+        Q10 = self.quadrics
+        Q10[u] = list(map(add, Q10[u], Q10[w]))
+        self.version[u] += 1
+        self.version[w] += 1
+        self.n_faces -= 2
+        if self.record:
+            self.collapses.append(Collapse(u, w, np.array(position), edge.cost,
+                                           tuple(sorted(shared))))
+
+    def requeue(self, v):
+        """Push the edges at `v` with their new costs (the optimal position of
+        :math:`Q_v + Q_x`, or the boundary end point), and the refused edges near `v` again."""
+        version, P, Q10, on_border, heap = self.version, self.positions, self.quadrics, \
+            self.on_border, self.heap
+        ring, counter = self.ring[v], self.counter
+        vu, pu, border_u, qu = version[v], P[v], on_border[v], Q10[v]
+        for x in ring:
+            if border_u or on_border[x]:
+                if border_u and on_border[x]:
+                    continue
+                fixed = pu if border_u else P[x]
+                c = max(_cost10(list(map(add, qu, Q10[x])), *fixed), 0.0)
+                heapq.heappush(heap, (c, counter, v, x, vu, version[x], fixed))
+            else:
+                px, c = _target10(list(map(add, qu, Q10[x])), pu, P[x])
+                heapq.heappush(heap, (c, counter, v, x, vu, version[x], px))
+            counter += 1
+        self.counter = counter
+        refused, refused_at = self.refused, self.refused_at
+        for x in (*ring, v):                   # refused edges near v may be fine now
+            keys = refused_at[x]
+            if keys:
+                for key in keys:
+                    item = refused.pop(key, None)
+                    if item is not None:
+                        heapq.heappush(heap, item)
+                keys.clear()
+
+    def stop_reason(self, target):
+        """Why the loop stopped, as :attr:`SimplificationRecord.stop_reason` says it."""
+        m, n_faces = len(self.faces), self.n_faces
+        if n_faces <= target:
+            return (f"reached the target: {n_faces} faces (target {target})" if m > target else
+                    f"nothing to do: the mesh has {m} faces, target {target}")
+        return (f"stopped at {n_faces} faces (target {target}): no edge left whose collapse "
+                f"keeps the mesh manifold, unfolded and its boundary intact "
+                f"({sum(self.rejections.values())} collapses refused)")
+
+    def compacted(self):
+        """The surviving vertices and faces, in their original order (:func:`_compact`)."""
+        pos = np.array(self.positions, dtype=float).reshape(-1, 3)
+        F, alive = self.faces, self.face_alive
+        return _compact(pos, np.array([F[f] for f in range(len(F)) if alive[f]],
+                                      dtype=np.int64).reshape(-1, 3))
+
 
 def simplify_qem(vertices, faces, target_faces, record=True, max_angle=np.pi / 2):
     r"""Simplify a triangle mesh by iterative edge collapse with the quadric error metric.
@@ -282,12 +517,14 @@ def simplify_qem(vertices, faces, target_faces, record=True, max_angle=np.pi / 2
     2. For every edge, the position :math:`\bar v` minimizing :math:`\bar v^T (Q_1 + Q_2) \bar v`
        and that cost (:func:`optimal_position`); all edges go into a heap.
     3. Pop the cheapest edge. Skip it if it is stale (an end point changed since it was pushed:
-       lazy deletion); refuse it if the collapse would break the mesh (the link condition,
-       a face normal turning by more than `max_angle` or a face becoming degenerate, a vertex
-       left with fewer than 3 neighbours, the boundary rules; see the module notes); refused
-       edges are retried once their neighbourhood changes. Else collapse it: vertex
-       ``removed`` merges into ``kept`` at :math:`\bar v`, the two faces of the edge vanish,
-       :math:`Q_{kept} \leftarrow Q_1 + Q_2`, and the edges at ``kept`` get new costs.
+       lazy deletion). Refuse it if the collapse would break the mesh, checked in this order
+       (the first failure names the refusal in :attr:`SimplificationRecord.rejections`): the
+       link condition, a vertex left with fewer than 3 neighbours (valence), a face normal
+       turning by more than `max_angle` or a face becoming degenerate (fold); the boundary
+       rules are kept throughout (see the module notes). Refused edges are retried once their
+       neighbourhood changes. Else collapse it: vertex ``removed`` merges into ``kept`` at
+       :math:`\bar v`, the two faces of the edge vanish, :math:`Q_{kept} \leftarrow Q_1 + Q_2`;
+       then requeue: the edges at ``kept`` get new costs.
     4. Stop at `target_faces` faces (or one fewer: a collapse removes two) or when no edge can
        be collapsed.
 
@@ -337,167 +574,21 @@ def simplify_qem(vertices, faces, target_faces, record=True, max_angle=np.pi / 2
     angle = as_scalar(max_angle, "max_angle")
     if not 0 < angle <= np.pi:
         raise ValueError(f"max_angle must be in (0, pi] radians, got {max_angle!r}")
-    cos_limit = float(np.cos(angle))
-    pos = mesh.vertices.copy()
-    n, m = len(pos), len(tri)
-    Q = vertex_quadrics(pos, tri)
-    F = tri.tolist()
-    vfaces = [set() for _ in range(n)]
-    for f, (a, b, c) in enumerate(F):
-        vfaces[a].add(f)
-        vfaces[b].add(f)
-        vfaces[c].add(f)
-    boundary = mesh.boundary_vertices()
-    on_border = boundary.tolist()
-    version = [0] * n
-    alive = [True] * n
-    face_alive = [True] * m
-    extent = float(np.ptp(pos, axis=0).max()) if n else 1.0
-    eps2 = (1e-12 * max(extent, 1e-150) ** 2) ** 2     # squared |normal| of a degenerate face
-    rejections = {"link condition": 0, "flipped face": 0, "valence": 0}
-    collapses = []
-
-    # all edges at once (numpy), then per collapse a few edges (Python floats, same maths)
-    e = mesh.edges()
-    e = e[~(boundary[e[:, 0]] & boundary[e[:, 1]])]     # boundary edges and chords never go
-    a, b = e[:, 0], e[:, 1]
-    x, cost = _optimal(Q[a] + Q[b], pos[a], pos[b])
-    fix_a, fix_b = boundary[a], boundary[b]             # a boundary end point stays put
-    x[fix_a], x[fix_b] = pos[a[fix_a]], pos[b[fix_b]]
-    fixed = fix_a | fix_b
-    cost[fixed] = np.maximum(collapse_cost(Q[a[fixed]] + Q[b[fixed]], x[fixed]), 0.0)
-    heap = [(c, i, u, w, 0, 0, p) for i, (c, u, w, p)
-            in enumerate(zip(cost.tolist(), a.tolist(), b.tolist(), x.tolist()))]
-    heapq.heapify(heap)
-    counter = len(heap)
-    P = pos.tolist()
-    Q10 = Q[:, _UPPER[0], _UPPER[1]].tolist()
-    rejected = {}                      # edge key -> heap entry refused, retried after changes
-    rejected_at = [set() for _ in range(n)]
-    nbr = [set() for _ in range(n)]    # the one-ring of each vertex, kept up to date
-    for a, b in mesh.edges().tolist():
-        nbr[a].add(b)
-        nbr[b].add(a)
-
-    def refuse(entry, u, w, why):
-        rejections[why] += 1
-        key = (u, w) if u < w else (w, u)
-        rejected[key] = entry
-        rejected_at[u].add(key)
-        rejected_at[w].add(key)
-
-    def folds(u, w, p, faces):
-        """Would moving u and w to p turn a face normal by more than max_angle (or degenerate)?
-
-        Each face has exactly one moving corner m; with the other two b, c (in the face's
-        order after m) the normal is (c - b) x (m - b), before and after the move.
-        """
-        px, py, pz = p
-        for f in faces:
-            a, b, c = F[f]
-            if a == u or a == w:
-                m, b, c = P[a], P[b], P[c]
-            elif b == u or b == w:
-                m, b, c = P[b], P[c], P[a]
-            else:
-                m, b, c = P[c], P[a], P[b]
-            bx, by, bz = b
-            ex, ey, ez = c[0] - bx, c[1] - by, c[2] - bz
-            mx, my, mz = m[0] - bx, m[1] - by, m[2] - bz
-            ox, oy, oz = ey * mz - ez * my, ez * mx - ex * mz, ex * my - ey * mx
-            mx, my, mz = px - bx, py - by, pz - bz
-            nx, ny, nz = ey * mz - ez * my, ez * mx - ex * mz, ex * my - ey * mx
-            len_new = nx * nx + ny * ny + nz * nz
-            if len_new <= eps2:
-                return True
-            len_old = ox * ox + oy * oy + oz * oz
-            if len_old > eps2 and (ox * nx + oy * ny + oz * nz <=
-                                   cos_limit * (len_old * len_new) ** 0.5):
-                return True
-        return False
-
-    n_faces = m
-    while n_faces > target and heap:
-        entry = heapq.heappop(heap)
-        cost, _, u, w, vu, vw, p = entry
-        if not (alive[u] and alive[w]) or version[u] != vu or version[w] != vw:
-            continue                                            # stale entry
-        if on_border[w]:
-            u, w = w, u                                         # keep the boundary vertex
-        if on_border[w]:
-            continue                          # two boundary end points: never queued anyway
-        shared = vfaces[u] & vfaces[w]
-        if len(shared) != 2:
-            continue                                            # no longer an edge
-        ring_u, ring_w = nbr[u], nbr[w]
-        common = ring_u & ring_w
-        f1, f2 = shared
-        opposite = {*F[f1], *F[f2]} - {u, w}
-        if common != opposite:
-            refuse(entry, u, w, "link condition")
-            continue
-        if (len(ring_u) + len(ring_w) - 4 < 3 or
-                any(len(nbr[x]) - 1 < (2 if on_border[x] else 3) for x in opposite)):
-            refuse(entry, u, w, "valence")
-            continue
-        if folds(u, w, p, (vfaces[u] | vfaces[w]) - shared):
-            refuse(entry, u, w, "flipped face")
-            continue
-        # the collapse: w merges into u
-        for f in shared:
-            face_alive[f] = False
-            for x in F[f]:
-                vfaces[x].discard(f)
-        for f in vfaces[w]:
-            face = F[f]
-            face[face.index(w)] = u
-            vfaces[u].add(f)
-        vfaces[w] = set()
-        for x in ring_w:
-            if x != u:
-                nbr[x].discard(w)
-                nbr[x].add(u)
-        ring_u |= ring_w
-        ring_u.discard(u)
-        ring_u.discard(w)
-        nbr[w] = set()
-        alive[w] = False
-        P[u] = p
-        qu = Q10[u] = list(map(add, Q10[u], Q10[w]))
-        version[u] += 1
-        version[w] += 1
-        n_faces -= 2
-        if record:
-            collapses.append(Collapse(u, w, np.array(p), cost, tuple(sorted(shared))))
-        vu, pu, border_u = version[u], P[u], on_border[u]
-        for x in ring_u:                                        # new costs of the edges at u
-            if border_u or on_border[x]:
-                if border_u and on_border[x]:
-                    continue
-                fixed = pu if border_u else P[x]
-                c = max(_cost10(list(map(add, qu, Q10[x])), *fixed), 0.0)
-                heapq.heappush(heap, (c, counter, u, x, vu, version[x], fixed))
-            else:
-                px, c = _target10(list(map(add, qu, Q10[x])), pu, P[x])
-                heapq.heappush(heap, (c, counter, u, x, vu, version[x], px))
-            counter += 1
-        for x in (*ring_u, u):                 # refused edges near u may be fine now
-            keys = rejected_at[x]
-            if keys:
-                for key in keys:
-                    item = rejected.pop(key, None)
-                    if item is not None:
-                        heapq.heappush(heap, item)
-                keys.clear()
-    pos = np.array(P, dtype=float).reshape(-1, 3)
-    if n_faces <= target:
-        reason = (f"reached the target: {n_faces} faces (target {target})" if m > target else
-                  f"nothing to do: the mesh has {m} faces, target {target}")
-    else:
-        reason = (f"stopped at {n_faces} faces (target {target}): no edge left whose collapse "
-                  f"keeps the mesh manifold, unfolded and its boundary intact "
-                  f"({sum(rejections.values())} collapses refused)")
-    out_v, out_f = _compact(pos, np.array([F[f] for f in range(m) if face_alive[f]],
-                                          dtype=np.int64).reshape(-1, 3))
-    rec = SimplificationRecord(mesh.vertices.copy(), tri, collapses, target, reason, rejections)
+    qem = _Collapser(mesh, tri, float(np.cos(angle)), record)     # steps 1 and 2
+    while qem.n_faces > target:                                   # step 3, until step 4
+        edge = qem.pop_cheapest()                                 # skips the stale entries
+        if edge is None:                                          # no edge left
+            break
+        if not qem.link_condition_holds(edge):
+            qem.refuse(edge, "link condition")
+        elif not qem.valence_ok(edge):
+            qem.refuse(edge, "valence")
+        elif qem.folds(edge, edge.position):
+            qem.refuse(edge, "flipped face")
+        else:
+            qem.collapse(edge, edge.position)
+            qem.requeue(edge.kept)
+    out_v, out_f = qem.compacted()
+    rec = SimplificationRecord(mesh.vertices.copy(), tri, qem.collapses, target,
+                               qem.stop_reason(target), qem.rejections)
     return Simplified(out_v, out_f, rec)
