@@ -81,10 +81,11 @@ error of later collapses still refers to the planes of the *original* surface.
 
 A collapse is **rejected** when it would break the mesh: (i) the *link condition*: the end points
 must have exactly two common neighbours, the vertices opposite the edge (otherwise the collapse
-pinches the surface into a non-manifold one or folds two faces onto each other); (ii) a
-surviving face around the edge would turn its normal by more than ``max_angle`` (90 degrees by
-default: a fold-over) or become degenerate; (iii) a vertex would be left with fewer than three
-neighbours (a tetrahedron cannot lose more faces). **Boundaries are kept exactly**: a boundary
+pinches the surface into a non-manifold one or folds two faces onto each other); (ii) the
+*valence*: a vertex would be left with fewer than three neighbours (a tetrahedron cannot lose
+more faces); (iii) the *fold test*: a surviving face around the edge would turn its normal by
+more than ``max_angle`` (90 degrees by default: a fold-over) or become degenerate. The checks
+run in this order, and a refusal is counted under the first that fails. **Boundaries are kept exactly**: a boundary
 edge is never collapsed, a boundary vertex never moves (an interior edge with one boundary end
 point collapses onto that end point) and an interior edge joining two boundary vertices is
 rejected (it would pinch the surface). Closed meshes stay closed, and a hole keeps its rim.
