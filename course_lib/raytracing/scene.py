@@ -178,8 +178,8 @@ class Mesh:
     """
 
     def __init__(self, vertices, faces, material=Material(), smooth=True, leaf_size=4):
-        self.face_normals = shading.face_normals(vertices, faces)       # checks both
-        self.vertex_normals = shading.vertex_normals(vertices, faces)
+        self.vertex_normals = shading.vertex_normals(vertices, faces)   # checks both: triangles
+        self.face_normals = shading.face_normals(vertices, faces)
         self.vertices = as_points(vertices, "vertices", dims=3)
         self.faces = np.asarray(faces).astype(np.intp)
         _check_material(material)
