@@ -251,7 +251,7 @@ class RaySamples:
         used = inside[self.hit].any(axis=0)                  # drop depths no ray uses
         first, last = np.argmax(used), len(used) - np.argmax(used[::-1])
         inside = inside[self.hit, first:last]
-        samples = scivis.interpolate(values, points[self.hit, first:last], sp, org)
+        samples = scivis.multilinear_interpolate(values, points[self.hit, first:last], sp, org)
         self.samples = np.where(inside, samples, np.nan)
         self.inside = inside
         # classification by a lookup table of LUT_SIZE entries over [0, 1]: each sample's
