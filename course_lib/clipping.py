@@ -27,9 +27,12 @@ bit   value      meaning
 
 (4 bits in 2D, 6 in 3D.)
 """
+import warnings
+
 import numpy as np
 
 from ._validate import as_array, as_matrix, as_points, as_vector, broadcast_stacks
+from .mesh.geometry import face_cross_products   # re-exported: Newell's sum, not unit length
 
 __all__ = [
     "BIT_NAMES",
@@ -42,7 +45,7 @@ __all__ = [
     "cohen_sutherland_many",
     "cohen_sutherland_steps",
     "describe_outcode",
-    "face_normals",
+    "face_cross_products",
     "is_back_face",
     "liang_barsky",
     "liang_barsky_many",
@@ -101,31 +104,22 @@ def is_back_face(normal, view_vector):
 
 
 def face_normals(vertices, faces):
-    r"""Outward normals (not normalized) of polygons listed counter-clockwise from outside.
+    """Deprecated: :func:`face_cross_products`, which this chapter called ``face_normals``.
 
-    For a triangle :math:`(a, b, c)` it is :math:`(b - a) \times (c - a)`; for any polygon the
-    sum of the cross products of consecutive vertices (Newell's method), which is twice the
-    area vector and does not need the polygon to be convex.
-
-    Parameters
-    ----------
-    vertices : array_like, shape (n, 3)
-    faces : array_like of int, shape (m, k)
-        Each row lists a face's vertex indices, counter-clockwise seen from outside.
-
-    Returns
-    -------
-    ndarray, shape (m, 3)
-
-    Examples
-    --------
-    >>> face_normals([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
-    array([[0., 0., 1.]])
+    Not unit length (twice the area vector), unlike :func:`course_lib.mesh.face_normals`, the
+    library's face normal; warns (``DeprecationWarning``) and returns
+    ``face_cross_products(vertices, faces)``, for (m, k) faces as before.
     """
     v = as_points(vertices, "vertices", dims=3)
     f = _faces(faces, len(v))
-    p = v[f]                                        # (m, k, 3)
-    return np.cross(p, np.roll(p, -1, axis=1)).sum(axis=1)
+    warnings.warn("clipping.face_normals is deprecated: it returns face_cross_products (normal "
+                  "times twice the area), not unit normals; call clipping.face_cross_products, "
+                  "or mesh.face_normals for unit normals", DeprecationWarning, stacklevel=2)
+    return _cross_products(v, f)
+
+
+def _cross_products(v, f):
+    return face_cross_products(v, f) if len(f) else np.zeros((0, 3))   # (0, k) faces: none
 
 
 def back_faces(vertices, faces, eye=None, direction=None):
@@ -172,7 +166,7 @@ def back_faces(vertices, faces, eye=None, direction=None):
         raise ValueError("give exactly one of eye (a position) and direction (a view vector)")
     v = as_points(vertices, "vertices", dims=3)
     f = _faces(faces, len(v))
-    normals = face_normals(v, f)
+    normals = _cross_products(v, f)
     if eye is not None:
         view = v[f[:, 0]] - as_vector(eye, "eye", 3)
     else:

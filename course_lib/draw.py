@@ -10,6 +10,8 @@ import sys
 
 import numpy as np
 
+from .mesh.geometry import face_normals   # re-exported: the one (unit) face normal
+
 __all__ = [
     "AXIS_COLORS",
     "Blitter",
@@ -435,26 +437,6 @@ def set_mesh_3d(collection, vertices, faces, facecolors=None):
     collection.set_verts([v[f] for f in faces])
     if facecolors is not None:
         collection.set_facecolor(facecolors)
-
-
-def face_normals(vertices, faces):
-    """Unit normals of planar polygons (Newell's method; counter-clockwise faces point out).
-
-    Examples
-    --------
-    >>> face_normals(np.eye(3), [[0, 1, 2]]).round(3).tolist()
-    [[0.577, 0.577, 0.577]]
-    """
-    v = np.asarray(vertices, dtype=float)
-    normals = []
-    for f in faces:
-        p = v[f]
-        q = np.roll(p, -1, axis=0)
-        n = np.array([np.sum((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])),
-                      np.sum((p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0])),
-                      np.sum((p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1]))])
-        normals.append(n / max(np.linalg.norm(n), 1e-12))
-    return np.array(normals)
 
 
 class Blitter:

@@ -942,6 +942,7 @@ def test_back_faces_in_css_need_direction_0_0_minus_1():
         np.testing.assert_array_equal(C.back_faces(css, faces, direction=[0, 0, 1]), ~world)
 
 
+@pytest.mark.filterwarnings("ignore:clipping.face_normals is deprecated")
 def test_face_normals_closed_form():
     # Newell: twice the area vector; a 2 x 3 rectangle in the xy plane, counter-clockwise
     np.testing.assert_allclose(C.face_normals([[0, 0, 0], [2, 0, 0], [2, 3, 0], [0, 3, 0]],
@@ -950,6 +951,26 @@ def test_face_normals_closed_form():
     ell = [[1, 0, 0], [1, 2, 0], [1, 2, 1], [1, 1, 1], [1, 1, 2], [1, 0, 2]]
     np.testing.assert_allclose(C.face_normals(ell, [list(range(6))]), [[6, 0, 0]], atol=1e-15)
 
+
+
+def test_face_cross_products_are_the_old_face_normals_and_mesh_normals_their_direction():
+    # one function for each concept: clipping.face_cross_products is mesh's, clipping's old
+    # name still works but warns (it is not unit length), mesh.face_normals is its direction
+    from course_lib import draw, mesh, shading
+    assert C.face_cross_products is mesh.face_cross_products
+    assert shading.face_normals is mesh.face_normals is draw.face_normals
+    rng = np.random.default_rng(5)
+    v = rng.normal(size=(30, 3)) + [1e3, 0, 0]           # far from the origin
+    f = rng.permuted(np.tile(np.arange(30), (12, 1)), axis=1)[:, :5]
+    with pytest.warns(DeprecationWarning, match="face_cross_products"):
+        old = C.face_normals(v, f)
+    c = C.face_cross_products(v, f)
+    np.testing.assert_array_equal(old, c)
+    p = v[f]                                              # Newell about the origin, by hand
+    np.testing.assert_allclose(c, np.cross(p, np.roll(p, -1, axis=1)).sum(axis=1), atol=1e-8)
+    np.testing.assert_allclose(mesh.face_normals(v, f),
+                               c / np.linalg.norm(c, axis=1, keepdims=True), atol=1e-14)
+    np.testing.assert_allclose(mesh.face_areas(v, f), np.linalg.norm(c, axis=1) / 2)
 
 # ---------------------------------------------------------------------------------------------
 # bad input

@@ -254,6 +254,22 @@ def test_reflect_matches_glsl():
     np.testing.assert_allclose(rt.reflect_direction(d, -4 * n), r, atol=1e-12)
 
 
+
+def test_reflect_direction_is_phong_reflect_of_the_reversed_ray():
+    # two conventions, one formula: a ray's d points towards the surface, Phong's L away from it
+    gen = np.random.default_rng(7)
+    d, n = 3 * random_units(gen, 200), random_units(gen, 200) * gen.uniform(0.5, 2, (200, 1))
+    r = rt.reflect_direction(d, n)
+    np.testing.assert_array_equal(r, shading.reflect(-d, n))          # r = 2 (n.L) n - L, L = -d
+    unit_n = n / np.linalg.norm(n, axis=1, keepdims=True)
+    np.testing.assert_allclose(r, d - 2 * np.einsum("ij,ij->i", d, unit_n)[:, None] * unit_n,
+                               atol=1e-12)
+    # Phong's R leaves on the side of L (away from the surface); the ray's r on the side -d
+    l = -d
+    np.testing.assert_allclose(np.einsum("ij,ij->i", shading.reflect(l, n), unit_n),
+                               np.einsum("ij,ij->i", l, unit_n), atol=1e-12)
+    np.testing.assert_allclose(np.linalg.norm(r, axis=1), np.linalg.norm(d, axis=1), rtol=1e-12)
+
 def test_refract_matches_glsl_and_snell():
     gen = np.random.default_rng(4)
     n = random_units(gen, 300)

@@ -1083,3 +1083,9 @@ def test_module_imports_numpy_only():
             "'skimage') if m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]"
+
+
+def test_interpolate_is_multilinear_interpolate_under_its_old_name():
+    assert S.interpolate is S.multilinear_interpolate
+    assert "interpolate" not in S.__all__ and "multilinear_interpolate" in S.__all__
+    np.testing.assert_allclose(S.multilinear_interpolate([[0, 1], [2, 3]], [[0.25, 0.5]]), [1.25])

@@ -565,3 +565,11 @@ def test_bad_mapping_and_procedural_arguments():
         T.mip_level(0.0)
     with pytest.raises(ValueError, match="squares"):
         T.checkerboard([0.5, 0.5], squares=0)
+
+
+def test_interpolate_is_barycentric_interpolate_under_its_old_name():
+    # one name per concept: texturing interpolates inside a triangle, scivis on a grid
+    from course_lib import scivis
+    assert T.interpolate is T.barycentric_interpolate
+    assert T.barycentric_interpolate is not scivis.multilinear_interpolate
+    assert "interpolate" not in T.__all__ and "barycentric_interpolate" in T.__all__

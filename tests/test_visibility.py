@@ -1013,3 +1013,10 @@ def test_other_bad_input_is_rejected_with_clear_messages():
         vis.visible_from_point(vis.example_floor_plan(), [1, 1], [1, 0], np.pi)
     with pytest.raises(TypeError, match="FloorPlan"):
         vis.pvs([[0, 0, 1, 1]])
+
+
+def test_scene_is_triangle_scene_under_its_old_name():
+    # the hidden-surface test scene (triangles + camera), not the ray tracer's Scene
+    from course_lib import raytracing
+    assert vis.Scene is vis.TriangleScene is type(vis.random_scene(3, seed=0))
+    assert vis.TriangleScene is not raytracing.Scene and "Scene" not in vis.__all__

@@ -118,8 +118,8 @@ from .half_edge import (HalfEdgeMesh)
 from .winged_edge import (WingedEdgeMesh)
 from .procedural import (bow_tie, cube, disc, double_torus, icosphere, tetrahedron,
     three_faces_on_an_edge, torus)
-from .geometry import (collapse_cost, face_areas, face_normals, face_planes, optimal_position,
-    plane_quadric, vertex_quadrics)
+from .geometry import (collapse_cost, face_areas, face_cross_products, face_normals, face_planes,
+    optimal_position, plane_quadric, vertex_quadrics)
 from .simplify import (Collapse, Simplified, SimplificationRecord, simplify_qem, _target10)
 
 __all__ = [
@@ -135,6 +135,7 @@ __all__ = [
     "disc",
     "double_torus",
     "face_areas",
+    "face_cross_products",
     "face_normals",
     "face_planes",
     "icosphere",

@@ -4,18 +4,64 @@ import numpy as np
 
 from .._validate import as_array, as_points
 from ._common import _face_table, _SINGULAR, _vertices
-from .connectivity import _corner_links
 
-__all__ = ["collapse_cost", "face_areas", "face_normals", "face_planes", "optimal_position",
-    "plane_quadric", "vertex_quadrics"]
+__all__ = ["collapse_cost", "face_areas", "face_cross_products", "face_normals", "face_planes",
+    "optimal_position", "plane_quadric", "vertex_quadrics"]
 
 
 # ---------------------------------------------------------------------------------------------
 # Normals, areas, planes and quadrics
 # ---------------------------------------------------------------------------------------------
 
-def _area_vectors(vertices, faces):
-    """Half the sum of p_i x p_(i+1) around each face (Newell): normal * area."""
+def _fan_cross(v, corners, starts):
+    """Sum of (p_i - p_0) x (p_(i+1) - p_0), i = 1 .. k-2, per face: (b - a) x (c - a) for a
+    triangle, Newell's sum about the face's first vertex for a polygon (unvalidated)."""
+    counts = np.diff(starts)
+    if (counts == 3).all():
+        f = corners.reshape(-1, 3)
+        a = v[f[:, 0]]
+        return np.cross(v[f[:, 1]] - a, v[f[:, 2]] - a)
+    pos = np.arange(len(corners)) - np.repeat(starts[:-1], counts)
+    fan = np.flatnonzero((pos >= 1) & (pos <= np.repeat(counts, counts) - 2))
+    a = v[np.repeat(corners[starts[:-1]], counts - 2)]
+    terms = np.cross(v[corners[fan]] - a, v[corners[fan + 1]] - a)
+    return np.add.reduceat(terms, np.concatenate([[0], np.cumsum(counts - 2)[:-1]]), axis=0)
+
+
+def face_cross_products(vertices, faces):
+    r"""The cross product of each face: its normal times **twice its area** (not unit length).
+
+    For a triangle :math:`(a, b, c)` it is :math:`(b - a) \times (c - a)`; for a polygon
+    :math:`p_0 \ldots p_{k-1}` Newell's sum :math:`\sum_i p_i \times p_{i+1}`, computed about
+    the first vertex, :math:`\sum_{i=1}^{k-2} (p_i - p_0) \times (p_{i+1} - p_0)` (the same
+    vector, with less rounding for a face far from the origin). It points by the right-hand
+    rule, outwards for faces listed counter-clockwise seen from outside, and needs no convex
+    face. Back-face culling needs only its direction
+    (:func:`course_lib.clipping.back_faces`); summed over the faces around a vertex it weights
+    each face by its area (:func:`course_lib.shading.vertex_normals`). :func:`face_normals` is
+    this vector normalized, :func:`face_areas` half its length.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+    faces : (m, k) int array or list of int lists
+
+    Returns
+    -------
+    ndarray, shape (m, 3)
+
+    Raises
+    ------
+    ValueError
+        For a face of fewer than 3 vertices or an index out of range.
+
+    Examples
+    --------
+    >>> face_cross_products([[0, 0, 0], [2, 0, 0], [0, 3, 0]], [[0, 1, 2]])   # area 3
+    array([[0., 0., 6.]])
+    >>> face_cross_products([[0, 0, 0], [2, 0, 0], [2, 3, 0], [0, 3, 0]], [[0, 1, 2, 3]])
+    array([[ 0.,  0., 12.]])
+    """
     v = _vertices(vertices)
     corners, starts = _face_table(faces)
     if corners.min() < 0 or corners.max() >= len(v):
@@ -24,17 +70,16 @@ def _area_vectors(vertices, faces):
     if (np.diff(starts) < 3).any():
         f = int(np.flatnonzero(np.diff(starts) < 3)[0])
         raise ValueError(f"face {f} has fewer than 3 vertices")
-    _, nxt, _ = _corner_links(starts)
-    p, q = v[corners], v[corners[nxt]]
-    return 0.5 * np.add.reduceat(np.cross(p, q), starts[:-1], axis=0)
+    return _fan_cross(v, corners, starts)
 
 
 def face_normals(vertices, faces):
     r"""Unit normals of the faces, by the right-hand rule (outwards for counter-clockwise faces).
 
-    For a triangle :math:`n = (p_1 - p_0) \times (p_2 - p_0) / \lVert \cdot \rVert`; for a
-    polygon Newell's sum :math:`\tfrac12 \sum_i p_i \times p_{i+1}` (its area vector). A face of
-    zero area gets the zero vector.
+    :func:`face_cross_products` normalized: for a triangle :math:`n = (p_1 - p_0) \times (p_2 -
+    p_0) / \lVert \cdot \rVert`, for a polygon Newell's sum. A face of zero area gets the zero
+    vector. The one face normal of the library: :func:`course_lib.shading.face_normals` and
+    :func:`course_lib.draw.face_normals` are this function.
 
     Parameters
     ----------
@@ -51,14 +96,17 @@ def face_normals(vertices, faces):
     >>> face_normals(*cube())[:2]
     array([[ 0.,  0., -1.],
            [ 0.,  0.,  1.]])
+    >>> face_normals([[0, 0, 0], [2, 0, 0], [0, 3, 0]], [[0, 1, 2], [0, 2, 1]])
+    array([[ 0.,  0.,  1.],
+           [ 0.,  0., -1.]])
     """
-    a = _area_vectors(vertices, faces)
-    length = np.linalg.norm(a, axis=1, keepdims=True)
-    return np.divide(a, length, out=np.zeros_like(a), where=length > 0)
+    c = face_cross_products(vertices, faces)
+    length = np.linalg.norm(c, axis=1, keepdims=True)
+    return np.divide(c, length, out=np.zeros_like(c), where=length > 0)
 
 
 def face_areas(vertices, faces):
-    r"""Areas of the faces: :math:`\lVert \tfrac12 \sum_i p_i \times p_{i+1} \rVert` (planar faces).
+    r"""Areas of the faces: half the length of :func:`face_cross_products` (planar faces).
 
     Examples
     --------
@@ -68,7 +116,7 @@ def face_areas(vertices, faces):
     >>> face_areas([[0, 0, 0], [1, 0, 0], [2, 0, 0]], [[0, 1, 2]])   # collinear: zero area
     array([0.])
     """
-    return np.linalg.norm(_area_vectors(vertices, faces), axis=1)
+    return 0.5 * np.linalg.norm(face_cross_products(vertices, faces), axis=1)
 
 
 def face_planes(vertices, faces):

@@ -45,7 +45,8 @@ normal :math:`n`, the mirror direction is (:func:`reflect_direction`)
 
 (the textbook's :math:`R = 2(N \cdot L)N - L` of the Phong model is the same formula for the
 vector :math:`L = -d` pointing *away* from the surface; mixing up the two conventions flips
-the ray into the surface).
+the ray into the surface). ``reflect_direction(d, n)`` is computed as
+:func:`course_lib.shading.reflect` ``(-d, n)``.
 
 **Refraction: Snell's law.** A ray passing from a medium of refractive index :math:`\eta_1`
 into one of index :math:`\eta_2` bends so that
@@ -102,6 +103,9 @@ glass (caustics) is missing. Here shadow rays pass through transparent objects a
 
 Conventions
 -----------
+* **Directions**: a ray's :math:`d` points the way it travels (towards the surface it hits);
+  the Phong vectors :math:`L, V, R` of :mod:`course_lib.shading` point *away* from the
+  surface, so :math:`V = -d` and ``reflect_direction(d, n) == shading.reflect(-d, n)``.
 * **Rays** are :math:`o + t\,d`; :math:`t` is the distance when :math:`d` is a unit vector
   (the camera and the tracer always use unit directions). Intersection functions take many rays
   at once, shapes ``(..., 3)``, and return :math:`t = \infty` for a miss; only hits with

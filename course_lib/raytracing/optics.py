@@ -3,6 +3,7 @@
 import numpy as np
 
 from .._validate import as_array, as_points, broadcast_stacks
+from ..shading.vectors import _mirror
 from ._common import _dot, _indices, _nonzero_vectors, _unit_vectors
 
 __all__ = ["fresnel", "reflect_direction", "refract_direction", "schlick"]
@@ -19,7 +20,9 @@ def reflect_direction(d, n):
 
     `d` is the *incoming* direction (the way the ray travels, towards the surface), the
     convention of ray tracers and GLSL's ``reflect``; the Phong model's :math:`R = 2 (N \cdot
-    L) N - L` (:func:`course_lib.shading.reflect`) is the same formula for :math:`L = -d`. The
+    L) N - L` (:func:`course_lib.shading.reflect`, whose :math:`L` points *away* from the
+    surface) is the same formula for :math:`L = -d`, and this function computes it so:
+    ``reflect_direction(d, n) == shading.reflect(-d, n)``. The
     side `n` points to does not matter (the formula is even in :math:`n`); `n` is normalized
     here and :math:`\lVert r \rVert = \lVert d \rVert`. The angle of reflection equals the angle
     of incidence: :math:`r \cdot n = -d \cdot n`.
@@ -51,7 +54,7 @@ def reflect_direction(d, n):
     _nonzero_vectors(dv.reshape(-1, 3), "d", dv.shape[:-1])
     nv = _unit_vectors(n, "n")
     broadcast_stacks(d=(dv, 1), n=(nv, 1))
-    return dv - 2.0 * _dot(dv, nv)[..., None] * nv
+    return _mirror(-dv, nv)                  # shading.reflect's R = 2 (n . L) n - L, L = -d
 
 
 def _refract(d, n, eta1, eta2):

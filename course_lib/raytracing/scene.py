@@ -28,7 +28,8 @@ class Material:
     Schlick's Fresnel factor :math:`F` into :math:`k_t F` (reflected) and :math:`k_t (1 - F)`
     (refracted). :math:`k_r + k_t \le 1` keeps a surface from returning more light than it
     receives. Glass: small diffuse and ambient coefficients, a highlight, :math:`k_t` near 1,
-    index 1.5; a mirror: :math:`k_r` near 1.
+    index 1.5; a mirror: :math:`k_r` near 1. The Phong coefficients are a
+    :class:`course_lib.shading.Material` (the `phong` field), not redefined here.
 
     Attributes
     ----------
@@ -178,8 +179,8 @@ class Mesh:
     """
 
     def __init__(self, vertices, faces, material=Material(), smooth=True, leaf_size=4):
-        self.face_normals = shading.face_normals(vertices, faces)       # checks both
-        self.vertex_normals = shading.vertex_normals(vertices, faces)
+        self.vertex_normals = shading.vertex_normals(vertices, faces)   # checks both: triangles
+        self.face_normals = shading.face_normals(vertices, faces)
         self.vertices = as_points(vertices, "vertices", dims=3)
         self.faces = np.asarray(faces).astype(np.intp)
         _check_material(material)
@@ -211,6 +212,9 @@ def _check_material(material, name="material"):
 @dataclass(frozen=True, eq=False)
 class Scene:
     """What the ray tracer renders: objects, lights, ambient light, background and a camera.
+
+    (The hidden-surface algorithms of chapter 5 take a different scene, triangles and a
+    camera: :class:`course_lib.visibility.TriangleScene`.)
 
     Attributes
     ----------

@@ -51,7 +51,7 @@ to inspect and draw step by step.
 
 * :func:`volume_render`: **direct volume rendering by ray casting**. One ray per pixel goes
   through the volume; at regular steps the volume is sampled by **trilinear interpolation**
-  (:func:`interpolate`), the sample is mapped to a colour :math:`c_i` and an opacity
+  (:func:`multilinear_interpolate`), the sample is mapped to a colour :math:`c_i` and an opacity
   :math:`\alpha_i` by a transfer function (:mod:`course_lib.colormaps`), and the samples are
   accumulated **front to back**:
 
@@ -144,6 +144,7 @@ Files
     Chapter 18 (lesson section 3): isosurfaces by marching cubes.
 ``grids.py``
     Chapter 18 (lesson section 1): bilinear and trilinear interpolation on regular grids.
+    ``interpolate`` is :func:`multilinear_interpolate` under its old name (the same function).
 ``volume_rendering.py``
     Chapter 18 (lesson section 4): direct volume rendering: ray casting, compositing, MIP.
 ``flow.py``
@@ -160,7 +161,7 @@ from .contour_lines import (SQUARE_SADDLES_CENTRE_ABOVE, SQUARE_TABLE, isolines,
     marching_squares, marching_squares_cases, saddle_centre_above)
 from .isosurfaces import (CENTRE, CUBE_CORNERS, CUBE_EDGES, cube_triangles, enclosed_volume,
     gradient, marching_cubes, marching_cubes_cases, surface_area, _ambiguous_faces)
-from .grids import (interpolate)
+from .grids import (interpolate, multilinear_interpolate)
 from .volume_rendering import (RaySamples, VolumeImage, composite, mip, view_rotation,
     volume_render)
 from .flow import (streamline)
@@ -184,7 +185,6 @@ __all__ = [
     "example_volume",
     "gradient",
     "hedgehog",
-    "interpolate",
     "isolines",
     "join_segments",
     "marching_cubes",
@@ -192,6 +192,7 @@ __all__ = [
     "marching_squares",
     "marching_squares_cases",
     "mip",
+    "multilinear_interpolate",
     "sample_vector_field",
     "saddle_centre_above",
     "streamline",

@@ -5,7 +5,7 @@ import numpy as np
 from .._validate import as_array, as_points, as_vector
 from ._common import _spacing
 
-__all__ = ["interpolate"]
+__all__ = ["multilinear_interpolate"]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -35,8 +35,11 @@ def _lerp_grid(flat, dims, idx):
     return values[0]
 
 
-def interpolate(grid, points, spacing=None, origin=None):
+def multilinear_interpolate(grid, points, spacing=None, origin=None):
     r"""Bilinear (2D) or trilinear (3D) interpolation of grid samples at arbitrary points.
+
+    ``scivis.interpolate`` is this function under its old name (not the interpolation inside a
+    triangle: that is :func:`course_lib.texturing.barycentric_interpolate`).
 
     In 3D, with :math:`(f_x, f_y, f_z)` the fractional position inside the cell,
 
@@ -62,7 +65,7 @@ def interpolate(grid, points, spacing=None, origin=None):
 
     Examples
     --------
-    >>> interpolate([[0, 1], [2, 3]], [[0.5, 0.5], [1, 0], [0, 2]])
+    >>> multilinear_interpolate([[0, 1], [2, 3]], [[0.5, 0.5], [1, 0], [0, 2]])
     array([1.5, 1. , 2. ])
     """
     p = as_points(points, "points", dims=(2, 3))
@@ -79,3 +82,6 @@ def interpolate(grid, points, spacing=None, origin=None):
     q = ((p - org) / sp).reshape(-1, d)
     out = _lerp_grid(flat, dims, [q[:, c] for c in range(d)])
     return out.reshape(p.shape[:-1] + out.shape[1:])
+
+
+interpolate = multilinear_interpolate     # the old name (not in __all__): the same function

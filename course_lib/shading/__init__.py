@@ -38,7 +38,9 @@ surface point and point *away* from it:
 * :math:`V` towards the viewer (:math:`V = (E - P)/\lVert E - P\rVert` for an eye at
   :math:`E`; for a ray tracer, :math:`V = -d` for a ray of direction :math:`d`),
 * :math:`R = 2 (N \cdot L) N - L`, the mirror image of :math:`L` about :math:`N`
-  (:func:`reflect`).
+  (:func:`reflect`), pointing away from the surface too. A ray tracer's incoming direction
+  :math:`d` points *towards* the surface: its mirror direction is ``reflect(-d, n)``, which
+  :func:`course_lib.raytracing.reflect_direction` ``(d, n)`` computes.
 
 A light behind the surface (:math:`N \cdot L \le 0`) contributes neither diffuse nor specular
 light: without that test a highlight could appear on the dark side.

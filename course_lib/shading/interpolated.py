@@ -6,6 +6,7 @@ import numpy as np
 
 from .. import visibility
 from .._validate import as_matrix, as_points, as_scalar, as_vector
+from ..mesh.geometry import face_cross_products, face_normals   # re-exported: the one face normal
 from ._common import _dot, _rgb
 from .illumination import blinn_phong, _lights, phong
 from .materials import Material
@@ -32,52 +33,16 @@ def _mesh(vertices, faces):
     return v, f.astype(np.intp)
 
 
-def _face_cross(v, f):
-    return np.cross(v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]])
-
-
-def face_normals(vertices, faces):
-    r"""Unit normals of the triangles, :math:`N = \frac{(v_1 - v_0) \times (v_2 - v_0)}
-    {\lVert (v_1 - v_0) \times (v_2 - v_0) \rVert}`.
-
-    They point to the side from which the vertices appear counter-clockwise. A degenerate
-    (zero-area) triangle gets the zero vector.
-
-    Parameters
-    ----------
-    vertices : array_like, shape (n, 3)
-    faces : array_like of int, shape (m, 3)
-
-    Returns
-    -------
-    ndarray, shape (m, 3)
-
-    Raises
-    ------
-    ValueError
-        For malformed vertices or faces.
-
-    Examples
-    --------
-    >>> face_normals([[0, 0, 0], [2, 0, 0], [0, 3, 0]], [[0, 1, 2], [0, 2, 1]])
-    array([[ 0.,  0.,  1.],
-           [ 0.,  0., -1.]])
-    """
-    v, f = _mesh(vertices, faces)
-    c = _face_cross(v, f)
-    length = np.sqrt(_dot(c, c))
-    return np.divide(c, length[:, None], out=np.zeros_like(c), where=length[:, None] > 0)
-
-
 def vertex_normals(vertices, faces):
     r"""Vertex normals: the area-weighted average of the normals of the faces around a vertex.
 
     .. math:: N_v = \frac{\sum_{f \ni v} A_f \hat N_f}{\lVert \sum_{f \ni v} A_f \hat N_f \rVert}
               , \qquad A_f \hat N_f = \tfrac12 (v_1 - v_0) \times (v_2 - v_0)
 
-    so summing the raw cross products does the weighting (big faces count more, slivers
-    little). Used by Gouraud and Phong shading to make a faceted mesh look smooth. A vertex that
-    belongs to no face (or whose faces' normals cancel) gets the zero vector.
+    so summing the raw cross products (:func:`course_lib.mesh.face_cross_products`) does the
+    weighting (big faces count more, slivers little). Used by Gouraud and Phong shading to make
+    a faceted mesh look smooth. A vertex that belongs to no face (or whose faces' normals
+    cancel) gets the zero vector.
 
     Parameters
     ----------
@@ -103,7 +68,7 @@ def vertex_normals(vertices, faces):
     array([0., 0., 1.])
     """
     v, f = _mesh(vertices, faces)
-    c = _face_cross(v, f)
+    c = face_cross_products(v, f)
     acc = np.zeros_like(v)
     for k in range(3):
         np.add.at(acc, f[:, k], c)

@@ -20,8 +20,9 @@ def reflect(l, n):
     Convention: :math:`L` points *away* from the surface, towards the light, and so does the
     result :math:`R` (towards where the mirrored light goes). With the other common convention,
     an *incoming* direction :math:`D = -L` travelling towards the surface (a ray's direction),
-    the same reflected vector is :math:`R = D - 2 (N \cdot D) N` (``reflect(-d, n)``). For unit
-    :math:`L`, :math:`R` is a unit vector with :math:`N \cdot R = N \cdot L`.
+    the same reflected vector is :math:`R = D - 2 (N \cdot D) N` (``reflect(-d, n)``), which is
+    :func:`course_lib.raytracing.reflect_direction` ``(d, n)``, computed by this function's
+    formula. For unit :math:`L`, :math:`R` is a unit vector with :math:`N \cdot R = N \cdot L`.
 
     `n` is normalized here; `l` is used as given (so :math:`\lVert R \rVert = \lVert L
     \rVert`). Works on any stack of vectors, shape ``(..., 3)``, with broadcasting.
@@ -55,7 +56,13 @@ def reflect(l, n):
     lv = as_points(l, "l", dims=3)
     nv = _unit(n, "n")
     broadcast_stacks(l=(lv, 1), n=(nv, 1))
-    return 2.0 * _dot(nv, lv)[..., None] * nv - lv
+    return _mirror(lv, nv)
+
+
+def _mirror(l, n):
+    """R = 2 (n . l) n - l for unit n (unvalidated): reflect, and raytracing.reflect_direction
+    as _mirror(-d, n)."""
+    return 2.0 * _dot(n, l)[..., None] * n - l
 
 
 def halfway(l, v):

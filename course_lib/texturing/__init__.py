@@ -70,6 +70,7 @@ Files
     sampling.
 ``triangle_interpolation.py``
     Chapter 14 (lesson section 3): barycentric coordinates, perspective-correct interpolation.
+    ``interpolate`` is :func:`barycentric_interpolate` under its old name (the same function).
 ``mappings.py``
     Chapter 14 (lesson section 4): mapping a surface to texture space.
 ``procedural.py``
@@ -82,8 +83,8 @@ Files
 
 from ._common import (WRAP_MODES)
 from .sampling import (bilinear_sample, nearest_sample, uv_grid)
-from .triangle_interpolation import (barycentric, interpolate, perspective_interpolate,
-    perspective_weights)
+from .triangle_interpolation import (barycentric, barycentric_interpolate, interpolate,
+    perspective_interpolate, perspective_weights)
 from .mappings import (cylindrical_map, inverse_cylindrical_map, inverse_planar_map,
     inverse_spherical_map, planar_map, seam_unwrap, spherical_map)
 from .procedural import (checkerboard, marble, perlin_noise, stripes, turbulence, value_noise,
@@ -96,10 +97,10 @@ __all__ = [
     "WRAP_MODES",
     "aliasing_demo",
     "barycentric",
+    "barycentric_interpolate",
     "bilinear_sample",
     "checkerboard",
     "cylindrical_map",
-    "interpolate",
     "inverse_cylindrical_map",
     "inverse_planar_map",
     "inverse_spherical_map",

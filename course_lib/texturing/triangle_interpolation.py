@@ -5,7 +5,8 @@ import numpy as np
 from .._validate import as_array, as_points, broadcast_stacks
 from ._common import _dot
 
-__all__ = ["barycentric", "interpolate", "perspective_interpolate", "perspective_weights"]
+__all__ = ["barycentric", "barycentric_interpolate", "perspective_interpolate",
+    "perspective_weights"]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -100,10 +101,13 @@ def _weights(weights, name="weights"):
     return w
 
 
-def interpolate(values, weights, stacked=False):
+def barycentric_interpolate(values, weights, stacked=False):
     r"""Interpolate vertex attributes with barycentric weights, :math:`q = \sum_k \lambda_k q_k`.
 
     Colours, texture coordinates, normals, depths: any attribute given at the three vertices.
+    Linear in screen space; :func:`perspective_interpolate` is the perspective-correct one.
+    ``texturing.interpolate`` is this function under its old name (not grid interpolation:
+    that is :func:`course_lib.scivis.multilinear_interpolate`).
 
     Parameters
     ----------
@@ -129,12 +133,12 @@ def interpolate(values, weights, stacked=False):
     Examples
     --------
     >>> w = barycentric([[1, 1], [2, 0]], [0, 0], [4, 0], [0, 4])
-    >>> interpolate([10.0, 20.0, 30.0], w)
+    >>> barycentric_interpolate([10.0, 20.0, 30.0], w)
     array([17.5, 15. ])
-    >>> interpolate([[1, 0, 0], [0, 1, 0], [0, 0, 1]], w)          # RGB at the vertices
+    >>> barycentric_interpolate([[1, 0, 0], [0, 1, 0], [0, 0, 1]], w)          # RGB at the vertices
     array([[0.5 , 0.25, 0.25],
            [0.5 , 0.5 , 0.  ]])
-    >>> interpolate([[0, 1, 2], [3, 4, 5]], [[1, 0, 0], [0, 0, 1]], stacked=True)
+    >>> barycentric_interpolate([[0, 1, 2], [3, 4, 5]], [[1, 0, 0], [0, 0, 1]], stacked=True)
     array([0., 5.])
     """
     w = _weights(weights)
@@ -152,6 +156,9 @@ def interpolate(values, weights, stacked=False):
         return np.einsum("...v,...vk->...k", w, q)
     raise ValueError(f"values must have shape (..., 3) or (..., 3, k) with stacked=True, got "
                      f"shape {q.shape}")
+
+
+interpolate = barycentric_interpolate     # the old name (not in __all__): the same function
 
 
 def perspective_weights(weights, w):
@@ -205,12 +212,12 @@ def perspective_weights(weights, w):
 def perspective_interpolate(values, weights, w, stacked=False):
     r"""Perspective-correct interpolation: :math:`\sum \lambda_k q_k/w_k \,/\, \sum \lambda_k/w_k`.
 
-    :func:`interpolate` with :func:`perspective_weights`.
+    :func:`barycentric_interpolate` with :func:`perspective_weights`.
 
     Parameters
     ----------
     values : array_like
-        As :func:`interpolate`.
+        As :func:`barycentric_interpolate`.
     weights : array_like, shape (..., 3)
         Screen-space barycentric weights.
     w : array_like, shape (3,) or (..., 3)
@@ -226,4 +233,4 @@ def perspective_interpolate(values, weights, w, stacked=False):
     >>> float(perspective_interpolate([0.0, 1.0, 0.0], [0.5, 0.5, 0.0], [1.0, 3.0, 1.0]))
     0.25
     """
-    return interpolate(values, perspective_weights(weights, w), stacked)
+    return barycentric_interpolate(values, perspective_weights(weights, w), stacked)

@@ -101,6 +101,7 @@ from .painter import (BSPNode, BSPTree, Painted, Scene, build_bsp, bsp_back_to_f
 from .occlusion import (occluder_solid_angle, occlusion_cull, rank_occluders, shadow_frustum)
 from .portals import (FloorPlan, PointVisibility, cell_of, example_floor_plan, floor_plan, pvs,
     stabbing_line, visible_from_point, walls)
+from .painter import TriangleScene        # Scene: its old name, the same class
 
 __all__ = [
     "BSPNode",
@@ -111,7 +112,7 @@ __all__ = [
     "Painted",
     "PointVisibility",
     "RayCastImage",
-    "Scene",
+    "TriangleScene",
     "ZBuffer",
     "ZBufferStep",
     "build_bsp",

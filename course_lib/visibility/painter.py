@@ -11,7 +11,7 @@ from .._validate import as_matrix, as_points, as_scalar, as_vector
 from ._common import _camera, _mesh, _pixels, _triangles
 from .z_buffer import _ordered_pair, _raster, _screen_triangles
 
-__all__ = ["BSPNode", "BSPTree", "Painted", "Scene", "build_bsp", "bsp_back_to_front",
+__all__ = ["BSPNode", "BSPTree", "Painted", "TriangleScene", "build_bsp", "bsp_back_to_front",
     "depth_sort", "painter_counterexample", "painter_image", "random_scene", "render_painter",
     "split_polygon"]
 
@@ -523,8 +523,13 @@ def render_painter(vertices, faces, view, projection, width, height, order="bsp"
     return painter_image(polys, ids, view, projection, width, height)
 
 
-class Scene(NamedTuple):
-    """A small test scene: a triangle mesh and a camera.
+class TriangleScene(NamedTuple):
+    """A small test scene for hidden-surface elimination: triangles and a camera.
+
+    What :func:`render_depth`, :func:`ray_cast_image` and :func:`render_painter` take, unpacked
+    (``render_depth(*scene, width, height)``). Not the ray tracer's scene of objects, materials
+    and lights (:class:`course_lib.raytracing.Scene`). ``visibility.Scene`` is this class under
+    its old name.
 
     Attributes
     ----------
@@ -542,6 +547,9 @@ class Scene(NamedTuple):
     faces: np.ndarray
     view: np.ndarray
     projection: np.ndarray
+
+
+Scene = TriangleScene       # the old name (not in __all__): the same class
 
 
 def _default_camera(eye=(0.0, 0.0, 5.0)):
@@ -568,7 +576,7 @@ def painter_counterexample(kind="cyclic"):
 
     Returns
     -------
-    Scene
+    TriangleScene
         The camera looks at the origin from (0, 0, 5).
 
     Raises
@@ -607,7 +615,7 @@ def painter_counterexample(kind="cyclic"):
         faces = np.array([[0, 1, 2], [3, 4, 5]])
     else:
         raise ValueError(f"kind must be 'cyclic' or 'interpenetrating', got {kind!r}")
-    return Scene(verts, faces, *_default_camera())
+    return TriangleScene(verts, faces, *_default_camera())
 
 
 def random_scene(n_triangles, seed=None, size=0.8):
@@ -624,7 +632,7 @@ def random_scene(n_triangles, seed=None, size=0.8):
 
     Returns
     -------
-    Scene
+    TriangleScene
 
     Raises
     ------
@@ -645,4 +653,4 @@ def random_scene(n_triangles, seed=None, size=0.8):
     rng = np.random.default_rng(seed)
     centres = rng.uniform(-1, 1, (n, 1, 3))
     verts = (centres + rng.uniform(-size, size, (n, 3, 3))).reshape(-1, 3)
-    return Scene(verts, np.arange(3 * n).reshape(n, 3), *_default_camera())
+    return TriangleScene(verts, np.arange(3 * n).reshape(n, 3), *_default_camera())

@@ -113,12 +113,12 @@ def scene(state):
                 "barycentric coordinates are undefined. Drag a corner away.")
     else:
         weights = texturing.barycentric(p, a, b, c)
-        raw = texturing.interpolate(COLORS, weights)
+        raw = texturing.barycentric_interpolate(COLORS, weights)
         colour = np.clip(raw, 0.0, 1.0)
         inside = bool(np.all(weights >= 0))
         w = texturing.barycentric(_PIXELS, a, b, c)
         in_tri = np.all(w >= 0, axis=-1)
-        image[..., :3] = np.clip(texturing.interpolate(COLORS, w), 0.0, 1.0)
+        image[..., :3] = np.clip(texturing.barycentric_interpolate(COLORS, w), 0.0, 1.0)
         image[..., 3] = in_tri
         ratio = " ".join(
             f"λ<sub>{n}</sub> = A({sub})/A(ABC) = {areas[sub]:.2f}/{areas['ABC']:.2f} = "

@@ -165,8 +165,8 @@ def scene(state):
     centre_above = scivis.saddle_centre_above(f, c)[si, sj]
     n = (len(xs) - 1) * FINE + 1
     fine_x, fine_y = np.meshgrid(np.linspace(xs[0], xs[-1], n), np.linspace(ys[0], ys[-1], n))
-    fine = scivis.interpolate(f, np.stack([fine_x, fine_y], axis=-1), data.spacing,
-                              data.origin)
+    fine = scivis.multilinear_interpolate(f, np.stack([fine_x, fine_y], axis=-1),
+                                          data.spacing, data.origin)
     reference = scivis.marching_squares(fine, c, (dx / FINE, dy / FINE), data.origin)
     counts = np.bincount(cases.ravel(), minlength=16)
     present = ", ".join(f"{k}×{counts[k]}" for k in range(1, 15) if counts[k])
@@ -504,7 +504,8 @@ def scene_3d(state):
                                                 data.origin, table=state.table)
     normals = np.zeros_like(vertices)
     if len(vertices):
-        g = scivis.interpolate(_gradient(state.volume), vertices, data.spacing, data.origin)
+        g = scivis.multilinear_interpolate(_gradient(state.volume), vertices, data.spacing,
+                                           data.origin)
         normals = -g / np.maximum(np.linalg.norm(g, axis=1, keepdims=True), 1e-12)
     summary = mesh_summary(vertices, triangles)
     text = (f"<b>{state.volume}, isovalue {state.level:.3f}, {state.table} table</b>: "

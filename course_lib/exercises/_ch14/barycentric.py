@@ -142,7 +142,7 @@ class InterpolateColour(_Chapter14):
         self.P = inside[int(rng.integers(len(inside)))]
         self.colours = rng.choice(_CHANNELS, size=(3, 3))
         self._weights = texturing.barycentric(self.P, self.A, self.B, self.C)
-        self.expected = texturing.interpolate(self.colours, self._weights)
+        self.expected = texturing.barycentric_interpolate(self.colours, self._weights)
 
     def acceptable(self):
         largest, second = np.sort(self._weights)[::-1][:2]
