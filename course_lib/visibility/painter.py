@@ -7,7 +7,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import transforms, viewing
-from .._validate import as_matrix, as_points, as_scalar, as_vector
+from .._validate import as_matrix, as_points, as_rng, as_scalar, as_vector
 from ._common import _camera, _mesh, _pixels, _triangles
 from .z_buffer import _ordered_pair, _raster, _screen_triangles
 
@@ -642,7 +642,7 @@ def random_scene(n_triangles, seed=None, size=0.8):
     """
     n = _pixels(n_triangles, "n_triangles")
     size = as_scalar(size, "size")
-    rng = np.random.default_rng(seed)
+    rng = as_rng(seed)
     centres = rng.uniform(-1, 1, (n, 1, 3))
     verts = (centres + rng.uniform(-size, size, (n, 3, 3))).reshape(-1, 3)
     return Scene(verts, np.arange(3 * n).reshape(n, 3), *_default_camera())
