@@ -58,10 +58,6 @@ def _t_max(value, t_min):
     return t
 
 
-
-
-
-
 def _indices(value, name):
     """Refractive indices: positive numbers (arrays allowed)."""
     eta = as_array(value, name)

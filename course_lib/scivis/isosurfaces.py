@@ -333,7 +333,6 @@ def marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0
     return vertices, triangles.reshape(-1, 3).astype(np.intp)
 
 
-
 def surface_area(vertices, triangles):
     r"""Total area of a triangle mesh, :math:`\sum \frac12 |(b - a) \times (c - a)|`.
 

@@ -7,8 +7,8 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import transforms, viewing
-from .._validate import as_matrix, as_points, as_rng, as_scalar, as_vector
-from ._common import _camera, _mesh, _pixels, _triangles
+from .._validate import as_matrix, as_mesh, as_points, as_rng, as_scalar, as_vector, as_whole
+from ._common import _camera, _triangles
 from .z_buffer import _ordered_pair, _raster, _screen_triangles
 
 __all__ = ["BSPNode", "BSPTree", "Painted", "Scene", "build_bsp", "bsp_back_to_front",
@@ -432,7 +432,7 @@ def painter_image(polygons, ids, view, projection, width, height):
            [0, 0, 0, 0]])
     """
     view, projection = _camera(view, projection)
-    width, height = _pixels(width, "width"), _pixels(height, "height")
+    width, height = as_whole(width, "width", 1), as_whole(height, "height", 1)
     labels = np.asarray(ids) if len(polygons) else np.zeros(0, dtype=np.intp)
     if labels.ndim != 1 or len(labels) != len(polygons) or not np.issubdtype(labels.dtype,
                                                                               np.integer):
@@ -509,7 +509,7 @@ def render_painter(vertices, faces, view, projection, width, height, order="bsp"
     >>> int((bsp.ids != zb.ids).sum()) < 5, int((naive.ids != zb.ids).sum()) > 20
     (True, True)
     """
-    v, f = _mesh(vertices, faces)
+    v, f = as_mesh(vertices, faces)
     view, projection = _camera(view, projection)
     tris = v[f]
     if order == "bsp":
@@ -640,7 +640,7 @@ def random_scene(n_triangles, seed=None, size=0.8):
     >>> float((zb.ids == rc.ids).mean()) > 0.97
     True
     """
-    n = _pixels(n_triangles, "n_triangles")
+    n = as_whole(n_triangles, "n_triangles", 1)
     size = as_scalar(size, "size")
     rng = as_rng(seed)
     centres = rng.uniform(-1, 1, (n, 1, 3))
