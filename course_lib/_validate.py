@@ -493,6 +493,13 @@ def as_rgb(value, name, *, maximum=1.0, grey=True, single=False):
     ValueError: rgb must lie in [0, 1], got 1.2 at index (1, 0)
     """
     c = as_array(value, name)
+    high = np.inf if maximum is None else maximum
+    bad = (c < -1e-9) | (c > high + 1e-9)
+    if bad.any():
+        index = tuple(int(i) for i in np.argwhere(bad)[0])
+        where = "" if not index else f" at index {index if len(index) > 1 else index[0]}"
+        rule = "not be negative" if maximum is None else f"lie in [0, {maximum:g}]"
+        raise ValueError(f"{name} must {rule}, got {c[index]:g}{where}")
     if grey and c.ndim == 0:
         c = np.full(3, float(c))
     if single and c.shape != (3,):
@@ -502,13 +509,6 @@ def as_rgb(value, name, *, maximum=1.0, grey=True, single=False):
         raise ValueError(f"{name} must be {'a number (grey) or ' if grey else ''}RGB triples "
                          f"with 3 components (r, g, b) in the last axis (shape (3,) or "
                          f"(..., 3)), got shape {c.shape}")
-    high = np.inf if maximum is None else maximum
-    bad = (c < -1e-9) | (c > high + 1e-9)
-    if bad.any():
-        index = tuple(int(i) for i in np.argwhere(bad)[0])
-        where = f" at index {index if len(index) > 1 else index[0]}"
-        rule = "not be negative" if maximum is None else f"lie in [0, {maximum:g}]"
-        raise ValueError(f"{name} must {rule}, got {c[index]:g}{where}")
     return np.clip(c, 0.0, high)
 
 
