@@ -198,8 +198,7 @@ def example_vector_field(kind="vortex", dim=2):
     array([[ 0.,  1.],
            [-2.,  0.]])
     """
-    if dim not in (2, 3):
-        raise ValueError(f"dim must be 2 or 3, got {dim!r}")
+    as_choice(dim, "dim", (2, 3))
     formula = _VECTOR_FIELDS[dim].get(kind)
     if formula is None:
         raise ValueError(f"kind must be one of {', '.join(map(repr, _VECTOR_FIELDS[dim]))} for "
@@ -229,8 +228,7 @@ def sample_vector_field(velocity, size=16, dim=2):
     >>> f.values.shape, f.values[0, 2]
     ((3, 3, 2), array([ 1., -1.]))
     """
-    if dim not in (2, 3):
-        raise ValueError(f"dim must be 2 or 3, got {dim!r}")
+    as_choice(dim, "dim", (2, 3))
     coords, spacing, origin = _cube_grid(size, dim)
     points = np.stack(coords, axis=-1)
     values = as_array(velocity(points), "velocity(points)")

@@ -5,8 +5,8 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import visibility
-from .._validate import (as_matrix, as_mesh, as_points, as_positive, as_rgb, as_vector,
-    as_whole)
+from .._validate import (as_choice, as_matrix, as_mesh, as_points, as_positive, as_rgb,
+    as_vector, as_whole)
 from ._common import _dot
 from .illumination import blinn_phong, _lights, phong
 from .materials import Material
@@ -265,10 +265,8 @@ def render_shaded(vertices, faces, view, projection, width, height, lights, mate
     >>> colours_per_face(flat), colours_per_face(smooth) > 5
     (1, True)
     """
-    if shading not in ("flat", "gouraud", "phong"):
-        raise ValueError(f"shading must be 'flat', 'gouraud' or 'phong', got {shading!r}")
-    if model not in ("phong", "blinn"):
-        raise ValueError(f"model must be 'phong' or 'blinn', got {model!r}")
+    as_choice(shading, "shading", ("flat", "gouraud", "phong"))
+    as_choice(model, "model", ("phong", "blinn"))
     illuminate = phong if model == "phong" else blinn_phong
     v, f = as_mesh(vertices, faces)
     view = as_matrix(view, "view", 4)

@@ -7,7 +7,8 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import transforms, viewing
-from .._validate import as_matrix, as_mesh, as_points, as_rng, as_scalar, as_vector, as_whole
+from .._validate import (as_choice, as_matrix, as_mesh, as_points, as_rng, as_scalar, as_vector,
+    as_whole)
 from ._common import _camera, _triangles
 from .z_buffer import _ordered_pair, _raster, _screen_triangles
 
@@ -198,8 +199,7 @@ def build_bsp(triangles, choose="first", eps=None):
     (3, 1)
     """
     tris = _triangles(triangles, "triangles")
-    if choose not in ("first", "fewest_splits"):
-        raise ValueError(f"choose must be 'first' or 'fewest_splits', got {choose!r}")
+    as_choice(choose, "choose", ("first", "fewest_splits"))
     scale = max(float(np.abs(tris).max()), 1e-300)
     eps = 1e-9 * scale if eps is None else as_scalar(eps, "eps")
     planes = [_plane_of(t) for t in tris]
@@ -359,8 +359,7 @@ def depth_sort(triangles, view, key="farthest"):
     """
     tris = _triangles(triangles, "triangles")
     view = as_matrix(view, "view", 4)
-    if key not in ("farthest", "centroid"):
-        raise ValueError(f"key must be 'farthest' or 'centroid', got {key!r}")
+    as_choice(key, "key", ("farthest", "centroid"))
     dist = -transforms.apply(view, tris.reshape(-1, 3))[:, 2].reshape(-1, 3)
     k = dist.max(axis=1) if key == "farthest" else dist.mean(axis=1)
     return np.argsort(-k, kind="stable")
