@@ -62,7 +62,7 @@ class State:
     segments: int = 12
 
 
-def _rgb(hex_color):
+def _hex_to_rgb(hex_color):
     """``#rrggbb`` -> RGB floats in [0, 1]."""
     h = hex_color.lstrip("#")
     if len(h) != 6:
@@ -218,8 +218,8 @@ def scene(state):
     if state.model not in MODELS:
         raise ValueError(f"model must be one of {MODELS}, got {state.model!r}")
     normals, mask = sphere_normals(SIZE)
-    colour = _rgb(state.color)
-    light_rgb = _rgb(state.light_color)
+    colour = _hex_to_rgb(state.color)
+    light_rgb = _hex_to_rgb(state.light_color)
     direction = light_direction(state.light_azimuth, state.light_elevation)
     light = shading.directional_light(direction, intensity=light_rgb)
     material = shading.colored_material(colour, state.ka, state.kd, state.ks, state.shininess,
