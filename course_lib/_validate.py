@@ -436,13 +436,13 @@ def as_mesh(vertices, faces, faces_name="faces"):
     except (TypeError, ValueError):                 # ragged lists
         raise ValueError(f"{faces_name} must be an (m, 3) array of vertex indices (triangles "
                          f"only), got {_kind(faces)} of rows of different lengths") from None
+    if f.size == 0 and f.ndim in (1, 2) and f.shape[-1] in (0, 3):       # [] or (0, 3)
+        raise ValueError(f"{faces_name} must contain at least one triangle, got an empty array")
     if f.shape == (3,):
         f = f[None]
-    if f.ndim != 2 or f.shape[1] != 3 or not (_is_integer_array(f) or f.size == 0):
+    if f.ndim != 2 or f.shape[1] != 3 or not _is_integer_array(f):
         raise ValueError(f"{faces_name} must be an (m, 3) array of vertex indices (triangles "
                          f"only), got shape {f.shape} and type {f.dtype}")
-    if len(f) == 0:
-        raise ValueError(f"{faces_name} must contain at least one triangle, got an empty array")
     low, high = int(f.min()), int(f.max())
     if low < 0 or high >= len(v):
         bad = high if high >= len(v) else low
