@@ -23,6 +23,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, shading, viewing, visibility
+from .._validate import as_choice
 from ._base import Explorer, degree_sliders
 
 __all__ = ["MODELS", "PhongExplorer", "State", "interpolation_buffers", "light_direction",
@@ -215,8 +216,7 @@ def scene(state):
     >>> float(s["raw"].specular.max())        # light at the viewer: R = V at the centre
     1.0
     """
-    if state.model not in MODELS:
-        raise ValueError(f"model must be one of {MODELS}, got {state.model!r}")
+    as_choice(state.model, "model", MODELS)
     normals, mask = sphere_normals(SIZE)
     colour = _hex_to_rgb(state.color)
     light_rgb = _hex_to_rgb(state.light_color)
