@@ -387,9 +387,12 @@ def as_choice(value, name, options):
     ...
     ValueError: method must be one of 'euler', 'rk2', 'rk4', got 'rk3'
     """
-    if not any(_equal(value, option) for option in options):
-        raise ValueError(f"{name} must be one of {', '.join(map(repr, options))}, got {value!r}")
-    return value
+    try:
+        if value in options:
+            return value
+    except (TypeError, ValueError):                 # e.g. an array compared with a name
+        pass
+    raise ValueError(f"{name} must be one of {', '.join(map(repr, options))}, got {value!r}")
 
 
 def as_mesh(vertices, faces, faces_name="faces"):
@@ -556,13 +559,6 @@ def as_rng(seed, name="seed"):
     if seed < 0:
         raise ValueError(f"{wanted}, got {int(seed)}")
     return np.random.default_rng(int(seed))
-
-
-def _equal(value, option):
-    try:
-        return bool(value == option)
-    except (TypeError, ValueError):                 # e.g. an array compared with a name
-        return False
 
 
 def _is_integer_array(a):
