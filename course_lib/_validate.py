@@ -10,6 +10,12 @@ import numpy as np
 
 __all__ = [
     "as_array",
+    "as_choice",
+    "as_mesh",
+    "as_positive",
+    "as_rgb",
+    "as_rng",
+    "as_whole",
     "broadcast_stacks",
     "as_matrix",
     "as_points",
@@ -240,6 +246,331 @@ def broadcast_stacks(**stacks):
                                  f"one of shape {leading[second]}: they must be equal, or one of "
                                  "them a single item") from None
     return np.broadcast_shapes(*leading.values())
+
+
+# ---------------------------------------------------------------------------------------------
+# Counts, positive numbers, choices, triangle meshes, colours, random generators
+# (each check once; the modules call these instead of keeping their own copies)
+# ---------------------------------------------------------------------------------------------
+
+def as_whole(value, name, minimum=0, *, integer_type=False, at_least=False):
+    """Return `value` as an int >= `minimum` (a count, a size, a depth), or raise naming `name`.
+
+    A float that is a whole number (``3.0``, as a slider gives) is accepted, unless
+    `integer_type`: then only integer types are (``3.0`` is a TypeError, as for an index).
+    A bool is never a number here: ``True`` would silently count as 1.
+
+    Parameters
+    ----------
+    value : int or float
+    name : str
+        The argument's name, for the message.
+    minimum : int
+        The smallest value allowed.
+    integer_type : bool
+        Reject every value that is not of an integer type (TypeError), even a whole float.
+    at_least : bool
+        Word a value below `minimum` as "`name` must be at least `minimum`" (and a fraction
+        as "must be a whole number"), instead of "`name` must be a whole number >= `minimum`";
+        the messages of curves, surfaces and mesh read so.
+
+    Returns
+    -------
+    int
+
+    Raises
+    ------
+    TypeError
+        For a bool, a string or None (and with `integer_type` any non-integer type).
+    ValueError
+        For a fraction, NaN, infinity, an array, or a value below `minimum`.
+
+    Examples
+    --------
+    >>> as_whole(3.0, "samples", 1)
+    3
+    >>> as_whole(0, "samples", 1)
+    Traceback (most recent call last):
+    ...
+    ValueError: samples must be a whole number >= 1, got 0
+    >>> as_whole(2.5, "degree", at_least=True)
+    Traceback (most recent call last):
+    ...
+    ValueError: degree must be a whole number, got 2.5
+    >>> as_whole(True, "n")
+    Traceback (most recent call last):
+    ...
+    TypeError: n must be a whole number, got a bool
+    """
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be a whole number, got a bool")
+    wanted = "a whole number" if at_least else f"a whole number >= {minimum}"
+    if integer_type:
+        if not isinstance(value, numbers.Integral):
+            raise TypeError(f"{name} must be {wanted}, got {value!r}")
+        number = int(value)
+    else:
+        x = as_scalar(value, name)
+        if not x.is_integer():
+            raise ValueError(f"{name} must be {wanted}, got {x!r}")
+        number = int(x)
+    if number < minimum:
+        bound = f"at least {minimum}" if at_least else wanted
+        raise ValueError(f"{name} must be {bound}, got {number}")
+    return number
+
+
+def as_positive(value, name, what=None):
+    """Return `value` as a finite float > 0 (a radius, a step, a length), or raise naming `name`.
+
+    Parameters
+    ----------
+    value : float
+    name : str
+        The argument's name, for the message.
+    what : str, optional
+        What the number is, added to the message in parentheses ("the sphere's radius").
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    TypeError
+        For a string or None.
+    ValueError
+        For zero, a negative number, NaN, infinity or an array.
+
+    Examples
+    --------
+    >>> as_positive(2, "radius")
+    2.0
+    >>> as_positive(0, "radius", "the sphere's radius")
+    Traceback (most recent call last):
+    ...
+    ValueError: radius must be positive (the sphere's radius), got 0
+    """
+    v = as_scalar(value, name)
+    if not v > 0:
+        raise ValueError(f"{name} must be positive{f' ({what})' if what else ''}, got {v:g}")
+    return v
+
+
+def as_choice(value, name, options):
+    """Return `value` if it is one of `options` (names of methods, modes, kinds), else raise.
+
+    Parameters
+    ----------
+    value : object
+    name : str
+        The argument's name, for the message.
+    options : sequence
+        The allowed values, listed in the message in this order.
+
+    Returns
+    -------
+    object
+        `value` itself.
+
+    Raises
+    ------
+    ValueError
+        For any other value.
+
+    Examples
+    --------
+    >>> as_choice("rk4", "method", ("euler", "rk2", "rk4"))
+    'rk4'
+    >>> as_choice("rk3", "method", ("euler", "rk2", "rk4"))
+    Traceback (most recent call last):
+    ...
+    ValueError: method must be one of 'euler', 'rk2', 'rk4', got 'rk3'
+    """
+    try:
+        if value in options:
+            return value
+    except (TypeError, ValueError):                 # e.g. an array compared with a name
+        pass
+    raise ValueError(f"{name} must be one of {', '.join(map(repr, options))}, got {value!r}")
+
+
+def as_mesh(vertices, faces, faces_name="faces", *, empty=False):
+    """Return a triangle mesh as ``(vertices, faces)``: float (n, 3) and intp (m, 3) arrays.
+
+    The rule: a mesh has at least one vertex and at least one triangle, and every index refers
+    to a vertex. A single triangle ``[a, b, c]`` is accepted as ``[[a, b, c]]``. A measure of a
+    surface (its area, its volume) passes ``empty=True``: the isosurface of a level the data
+    never takes has no triangles, and its area is 0, not an error.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+        Finite vertex positions, n >= 1.
+    faces : array_like of int, shape (m, 3)
+        Vertex indices of the triangles, m >= 1.
+    faces_name : str
+        The name of the faces argument, for the messages ("faces", "triangles").
+    empty : bool
+        Accept a mesh without triangles (and then without vertices): (0, 3) arrays.
+
+    Returns
+    -------
+    vertices : ndarray, shape (n, 3)
+    faces : ndarray of intp, shape (m, 3)
+
+    Raises
+    ------
+    ValueError
+        For malformed vertices, faces that are not an (m, 3) integer array, an empty face
+        list, or an index outside 0..n-1.
+
+    Examples
+    --------
+    >>> v, f = as_mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [0, 1, 2])
+    >>> v.shape, f.tolist()
+    ((3, 3), [[0, 1, 2]])
+    >>> as_mesh(v, [[0, 1, 3]])
+    Traceback (most recent call last):
+    ...
+    ValueError: faces refers to vertex 3 but there are 3 vertices
+    >>> [a.shape for a in as_mesh(np.zeros((0, 3)), np.zeros((0, 3), int), empty=True)]
+    [(0, 3), (0, 3)]
+    """
+    v = as_points(vertices, "vertices", dims=3)
+    if empty and v.ndim == 2 and np.size(faces) == 0:
+        return v, np.zeros((0, 3), np.intp)
+    if v.ndim != 2 or len(v) == 0:
+        raise ValueError(f"vertices must be an (n, 3) array with n >= 1, got shape {v.shape}")
+    try:
+        f = np.asarray(faces)
+    except (TypeError, ValueError):                 # ragged lists
+        raise ValueError(f"{faces_name} must be an (m, 3) array of vertex indices (triangles "
+                         f"only), got {_kind(faces)} of rows of different lengths") from None
+    if f.size == 0 and f.ndim in (1, 2) and f.shape[-1] in (0, 3):       # [] or (0, 3)
+        raise ValueError(f"{faces_name} must contain at least one triangle, got an empty array")
+    if f.shape == (3,):
+        f = f[None]
+    if f.ndim != 2 or f.shape[1] != 3 or not _is_integer_array(f):
+        raise ValueError(f"{faces_name} must be an (m, 3) array of vertex indices (triangles "
+                         f"only), got shape {f.shape} and type {f.dtype}")
+    low, high = int(f.min()), int(f.max())
+    if low < 0 or high >= len(v):
+        bad = high if high >= len(v) else low
+        raise ValueError(f"{faces_name} refers to vertex {bad} but there are {len(v)} vertices")
+    return v, f.astype(np.intp)
+
+
+def as_rgb(value, name, *, maximum=1.0, grey=True, single=False):
+    """Return `value` as RGB colours, shape ``(..., 3)``, or raise naming `name`.
+
+    Two kinds of RGB triple pass through here: a colour or reflectance, each component in
+    [0, 1] (the default), and a light's intensity, non-negative and unbounded
+    (``maximum=None``). Components within 1e-9 of the range (rounding) are clipped onto it.
+
+    Parameters
+    ----------
+    value : float or array_like, shape (3,) or (..., 3)
+    name : str
+        The argument's name, for the messages.
+    maximum : float or None
+        The largest component allowed; None for no bound (intensities).
+    grey : bool
+        Accept a single number as the grey ``(g, g, g)``, and ``(..., 1)`` stacks of greys
+        (returned as they are: they broadcast against RGB).
+    single : bool
+        Accept one triple only (or a number), not a stack.
+
+    Returns
+    -------
+    ndarray, shape (3,) or (..., 3) (or (..., 1) for greys)
+
+    Raises
+    ------
+    TypeError
+        For strings or None.
+    ValueError
+        For a wrong shape, NaN, infinity, or a component outside the range.
+
+    Examples
+    --------
+    >>> as_rgb(0.5, "color")
+    array([0.5, 0.5, 0.5])
+    >>> as_rgb([2.0, 2.0, 1.0], "intensity", maximum=None)
+    array([2., 2., 1.])
+    >>> as_rgb([[0, 0, 0], [1.2, 0, 0]], "rgb", grey=False)
+    Traceback (most recent call last):
+    ...
+    ValueError: rgb must lie in [0, 1], got 1.2 at index (1, 0)
+    """
+    c = as_array(value, name)
+    high = np.inf if maximum is None else maximum
+    bad = (c < -1e-9) | (c > high + 1e-9)
+    if bad.any():
+        index = tuple(int(i) for i in np.argwhere(bad)[0])
+        where = "" if not index else f" at index {index if len(index) > 1 else index[0]}"
+        rule = "not be negative" if maximum is None else f"lie in [0, {maximum:g}]"
+        raise ValueError(f"{name} must {rule}, got {c[index]:g}{where}")
+    if grey and c.ndim == 0:
+        c = np.full(3, float(c))
+    if single and c.shape != (3,):
+        raise ValueError(f"{name} must be {'a number (grey) or ' if grey else ''}an RGB triple "
+                         f"(r, g, b), got shape {c.shape}")
+    if c.ndim == 0 or c.shape[-1] not in ((1, 3) if grey else (3,)):
+        raise ValueError(f"{name} must be {'a number (grey) or ' if grey else ''}RGB triples "
+                         f"with 3 components (r, g, b) in the last axis (shape (3,) or "
+                         f"(..., 3)), got shape {c.shape}")
+    return np.clip(c, 0.0, high)
+
+
+def as_rng(seed, name="seed"):
+    """Return a ``numpy.random.Generator`` for `seed`; a Generator passes through unchanged.
+
+    Parameters
+    ----------
+    seed : None, int >= 0, numpy.random.Generator, SeedSequence or BitGenerator
+        None gives fresh entropy (a different result every run); a whole number the same
+        sequence every run; a Generator is used (and advanced) as it is.
+    name : str
+        The argument's name, for the message.
+
+    Returns
+    -------
+    numpy.random.Generator
+
+    Raises
+    ------
+    TypeError
+        For a bool, a float, a string or any other type.
+    ValueError
+        For a negative seed.
+
+    Examples
+    --------
+    >>> g = np.random.default_rng(1)
+    >>> as_rng(g) is g
+    True
+    >>> as_rng(-1)
+    Traceback (most recent call last):
+    ...
+    ValueError: seed must be None, a whole number >= 0 or a numpy.random.Generator, got -1
+    """
+    if isinstance(seed, np.random.Generator):
+        return seed
+    wanted = f"{name} must be None, a whole number >= 0 or a numpy.random.Generator"
+    if seed is None or isinstance(seed, (np.random.SeedSequence, np.random.BitGenerator)):
+        return np.random.default_rng(seed)
+    if isinstance(seed, (bool, np.bool_)):
+        raise TypeError(f"{wanted}, got a bool")
+    if not isinstance(seed, numbers.Integral):
+        raise TypeError(f"{wanted}, got {_kind(seed)}")
+    if seed < 0:
+        raise ValueError(f"{wanted}, got {int(seed)}")
+    return np.random.default_rng(int(seed))
+
+
+def _is_integer_array(a):
+    return np.issubdtype(a.dtype, np.integer) and not np.issubdtype(a.dtype, np.bool_)
 
 
 def _or(items):

@@ -33,9 +33,9 @@ from collections import namedtuple
 import numpy as np
 
 from . import curves
-from ._validate import as_array, as_scalar, as_vector
+from ._validate import as_array, as_positive, as_scalar, as_vector, as_whole
 from .curves import bspline_basis, bspline_basis_derivative
-from .curves._common import _integer, _knot_vector, _parameters
+from .curves._common import _knot_vector, _parameters
 from .curves.bezier_curves import _bernstein_matrix
 
 __all__ = [
@@ -451,7 +451,7 @@ def isoparametric_lines(evaluate, u_lines=5, v_lines=5, samples=50, domain_u=(0.
     if not callable(evaluate):
         raise TypeError(f"evaluate must be a function evaluate(u, v), got a "
                         f"{type(evaluate).__name__}")
-    samples = _integer(samples, "samples", 2)
+    samples = as_whole(samples, "samples", 2, at_least=True)
     (u0, u1), (v0, v1) = _interval(domain_u, "domain_u"), _interval(domain_v, "domain_v")
     us = _line_values(u_lines, "u_lines", u0, u1)
     vs = _line_values(v_lines, "v_lines", v0, v1)
@@ -470,7 +470,7 @@ def _interval(value, name):
 
 def _line_values(value, name, lo, hi):
     if np.ndim(value) == 0 and not isinstance(value, float):
-        return np.linspace(lo, hi, _integer(value, name, 1))
+        return np.linspace(lo, hi, as_whole(value, name, 1, at_least=True))
     return _axis(value, name, lo, hi).reshape(-1)
 
 
@@ -498,8 +498,8 @@ def hill_grid(nu=4, nv=4, height=1.0):
            [0., 1., 0.],
            [0., 0., 0.]])
     """
-    nu = _integer(nu, "nu", 2)
-    nv = _integer(nv, "nv", 2)
+    nu = as_whole(nu, "nu", 2, at_least=True)
+    nv = as_whole(nv, "nv", 2, at_least=True)
     h = as_scalar(height, "height")
     x, y = np.meshgrid(np.linspace(-1, 1, nu), np.linspace(-1, 1, nv), indexing="ij")
     z = h * np.outer(np.sin(np.pi * np.arange(nu) / (nu - 1)),
@@ -532,8 +532,8 @@ def wave_grid(nu=7, nv=7, amplitude=0.3, waves=1.0):
     >>> grid.shape, grid[:, 1, 2].round(12) + 0.0
     ((5, 3, 3), array([ 0.,  1.,  0., -1., -0.]))
     """
-    nu = _integer(nu, "nu", 2)
-    nv = _integer(nv, "nv", 2)
+    nu = as_whole(nu, "nu", 2, at_least=True)
+    nv = as_whole(nv, "nv", 2, at_least=True)
     a = as_scalar(amplitude, "amplitude")
     k = as_scalar(waves, "waves")
     x, y = np.meshgrid(np.linspace(-1, 1, nu), np.linspace(-1, 1, nv), indexing="ij")
@@ -570,9 +570,7 @@ def nurbs_sphere(radius=1.0, center=(0.0, 0.0, 0.0)):
     >>> sphere.control_grid.shape, sphere.knots_v
     ((9, 5, 3), array([0. , 0. , 0. , 0.5, 0.5, 1. , 1. , 1. ]))
     """
-    r = as_scalar(radius, "radius")
-    if r <= 0:
-        raise ValueError(f"radius must be positive, got {r!r}")
+    r = as_positive(radius, "radius")
     c = as_vector(center, "center", 3)
     circle, w_circle, knots_u, _ = curves.nurbs_circle()
     s = np.sqrt(0.5)

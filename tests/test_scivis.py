@@ -1089,3 +1089,15 @@ def test_interpolate_is_multilinear_interpolate_under_its_old_name():
     assert S.interpolate is S.multilinear_interpolate
     assert "interpolate" not in S.__all__ and "multilinear_interpolate" in S.__all__
     np.testing.assert_allclose(S.multilinear_interpolate([[0, 1], [2, 3]], [[0.25, 0.5]]), [1.25])
+
+
+def test_the_isosurface_of_a_level_the_data_never_takes_has_area_and_volume_zero():
+    # a slider may sweep past the data range: the empty surface is measured, not an error
+    volume = S.example_volume("sphere", size=12)
+    v, t = S.marching_cubes(volume.values, float(volume.values.max()) + 1.0,
+                                 volume.spacing, volume.origin)
+    assert t.shape == (0, 3)
+    assert S.surface_area(v, t) == 0.0
+    assert S.enclosed_volume(v, t) == 0.0
+    with pytest.raises(ValueError, match="triangles refers to vertex 3"):
+        S.surface_area([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 3]])

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from .._validate import as_array, as_scalar, as_vector
+from .._validate import as_array, as_vector
 
 
 # ---------------------------------------------------------------------------------------------
@@ -48,22 +48,3 @@ def _unit_interval(arr, name, what):
         raise ValueError(f"{name} must lie in [0, 1] ({what}), got {arr[index]:g} at index "
                          f"{index if len(index) > 1 else index[0]}")
     return arr
-
-
-def _rgb(value, name="rgb"):
-    rgb = as_array(value, name)
-    if rgb.ndim == 0 or rgb.shape[-1] != 3:
-        raise ValueError(f"{name} must have 3 components (r, g, b) in the last axis, got shape "
-                         f"{rgb.shape}")
-    if ((rgb < -1e-9) | (rgb > 1 + 1e-9)).any():
-        _unit_interval(rgb, name, "sRGB components")
-    return np.clip(rgb, 0.0, 1.0)
-
-
-def _count(value, name, minimum):
-    if isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be a whole number, got a bool")
-    v = as_scalar(value, name)
-    if v != int(v) or v < minimum:
-        raise ValueError(f"{name} must be a whole number >= {minimum}, got {value!r}")
-    return int(v)

@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from .._validate import as_array, as_scalar, as_vector
-from ._common import _rgb, _unit_interval
+from .._validate import as_array, as_rgb, as_scalar, as_vector
+from ._common import _unit_interval
 from .maps import sample_colormap
 
 __all__ = ["D65_WHITE", "delta_e", "greyscale", "is_monotonic_lightness", "lightness",
@@ -83,7 +83,7 @@ def srgb_to_xyz(rgb):
     >>> srgb_to_xyz([1, 1, 1])
     array([0.95047  , 1.0000001, 1.08883  ])
     """
-    return srgb_to_linear(_rgb(rgb)) @ _SRGB_TO_XYZ.T
+    return srgb_to_linear(as_rgb(rgb, "rgb", grey=False)) @ _SRGB_TO_XYZ.T
 
 
 def xyz_to_lab(xyz, white=D65_WHITE):
@@ -137,7 +137,7 @@ def luminance(rgb):
     >>> luminance([[1, 1, 0], [0, 0, 1]]).round(4)
     array([0.9278, 0.0722])
     """
-    return srgb_to_linear(_rgb(rgb)) @ _SRGB_TO_XYZ[1]
+    return srgb_to_linear(as_rgb(rgb, "rgb", grey=False)) @ _SRGB_TO_XYZ[1]
 
 
 def greyscale(rgb):

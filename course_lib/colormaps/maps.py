@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from .._validate import as_array
-from ._common import _count, _unit_interval
+from .._validate import as_array, as_whole
+from ._common import _unit_interval
 from ._data import COLORMAP_NAMES, _COLORMAPS
 
 __all__ = ["colormap", "sample_colormap"]
@@ -86,4 +86,4 @@ def sample_colormap(cmap, n=256):
            [1. , 0.5, 0.5],
            [1. , 0. , 0. ]])
     """
-    return _lookup(colormap(cmap), np.linspace(0.0, 1.0, _count(n, "n", 2)))
+    return _lookup(colormap(cmap), np.linspace(0.0, 1.0, as_whole(n, "n", 2)))

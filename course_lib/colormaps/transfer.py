@@ -4,8 +4,8 @@ and applying a colour map with an opacity to data.
 
 import numpy as np
 
-from .._validate import as_array, as_scalar
-from ._common import _count, _data_allowing_nan, _range, _unit_interval
+from .._validate import as_array, as_choice, as_scalar, as_whole
+from ._common import _data_allowing_nan, _range, _unit_interval
 from .maps import colormap, _lookup
 from .normalisation import normalize
 
@@ -81,8 +81,7 @@ class TransferFunction:
     """
 
     def __init__(self, points, values, kind="linear"):
-        if kind not in ("linear", "step"):
-            raise ValueError(f'kind must be "linear" or "step", got {kind!r}')
+        as_choice(kind, "kind", ("linear", "step"))
         p = as_array(points, "points")
         if p.ndim != 1 or len(p) < 2:
             raise ValueError(f"points must be a 1-D list of at least 2 scalar values, got shape "
@@ -155,7 +154,7 @@ class TransferFunction:
         >>> TransferFunction([0, 1], [0, 1]).lookup_table(5)
         array([0.  , 0.25, 0.5 , 0.75, 1.  ])
         """
-        n = _count(n, "n", 2)
+        n = as_whole(n, "n", 2)
         lo, hi = (self.points[0], self.points[-1]) if in_range is None else \
             _range(in_range, "in_range", ordered=True)
         return self(np.linspace(lo, hi, n))
@@ -347,8 +346,7 @@ def transfer_preset(name, in_range=(0.0, 1.0)):
     >>> transfer_preset("ramp", in_range=(0, 1000))(500)
     array([0.5, 0.5, 0.5, 0.5])
     """
-    if name not in _PRESETS:
-        raise ValueError(f"name must be one of {sorted(_PRESETS)}, got {name!r}")
+    as_choice(name, "name", sorted(_PRESETS))
     lo, hi = _range(in_range, "in_range", ordered=True)
     if hi == lo:
         raise ValueError("in_range must have low < high")

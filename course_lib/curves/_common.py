@@ -4,7 +4,7 @@ from collections import namedtuple
 
 import numpy as np
 
-from .._validate import as_array, as_scalar
+from .._validate import as_array, as_whole
 
 __all__ = ["NurbsCurve"]
 
@@ -26,18 +26,6 @@ _ROUND = 1e-12          # parameters this close (relative) outside the domain ar
 # input checks (private: what _validate offers, specialised to curves)
 # ---------------------------------------------------------------------------------------------
 
-def _integer(value, name, minimum=0):
-    """`value` as an int >= minimum (a whole float such as 3.0 is accepted), or raise."""
-    if isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be a whole number, got a bool")
-    x = as_scalar(value, name)
-    if not x.is_integer():
-        raise ValueError(f"{name} must be a whole number, got {x!r}")
-    if x < minimum:
-        raise ValueError(f"{name} must be at least {minimum}, got {int(x)}")
-    return int(x)
-
-
 def _control_points(value, name="control_points", minimum=2):
     """Control points as a float array of shape (n + 1, d), with n + 1 >= minimum and d >= 1."""
     p = as_array(value, name)
@@ -57,7 +45,7 @@ def _control_points(value, name="control_points", minimum=2):
 
 def _degree(value, n_control, name="degree"):
     """A B-spline degree p with 1 <= p <= n_control - 1."""
-    p = _integer(value, name)
+    p = as_whole(value, name, 0, at_least=True)
     if p < 1:
         raise ValueError(f"{name} must be at least 1 (1 = linear, 2 = quadratic, 3 = cubic), "
                          f"got {p}")
@@ -79,7 +67,7 @@ def _knot_vector(value, degree, n_control=None, name="knots"):
     if u.ndim != 1:
         raise ValueError(f"{name} must be a 1D array of numbers, got shape {u.shape}")
     if n_control is None:
-        p = _integer(degree, "degree", 1)
+        p = as_whole(degree, "degree", 1, at_least=True)
         if len(u) < 2 * p + 2:
             raise ValueError(f"{name} must have at least 2 * degree + 2 = {2 * p + 2} values "
                              f"for degree {p} (n_control + degree + 1 with at least "

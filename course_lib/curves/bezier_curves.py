@@ -4,8 +4,8 @@ import math
 
 import numpy as np
 
-from .._validate import as_array, as_scalar
-from ._common import _control_points, _integer, _parameters
+from .._validate import as_array, as_scalar, as_whole
+from ._common import _control_points, _parameters
 
 __all__ = ["bernstein", "bezier", "bezier_derivative", "bezier_elevate", "bezier_hodograph",
     "bezier_subdivide", "bezier_tangent", "de_casteljau"]
@@ -73,7 +73,7 @@ def bernstein(n, i, t):
     array([[1.  , 0.  , 0.  ],
            [0.25, 0.5 , 0.25]])
     """
-    n = _integer(n, "n", 0)
+    n = as_whole(n, "n", 0, at_least=True)
     t = as_array(t, "t")
     if i is None:
         return _bernstein_matrix(n, t)
@@ -258,7 +258,7 @@ def bezier_derivative(control_points, t, order=1):
     array([ 0., -8.])
     """
     p = _control_points(control_points)
-    order = _integer(order, "order", 0)
+    order = as_whole(order, "order", 0, at_least=True)
     t = _parameters(t, 0.0, 1.0)
     q = _hodographs(p, order)
     return _bernstein_matrix(len(q) - 1, t) @ q
@@ -394,7 +394,7 @@ def bezier_elevate(control_points, times=1):
            [3. , 3. ]])
     """
     p = _control_points(control_points)
-    times = _integer(times, "times", 0)
+    times = as_whole(times, "times", 0, at_least=True)
     for _ in range(times):
         n = len(p) - 1
         a = (np.arange(1, n + 1) / (n + 1))[:, None]

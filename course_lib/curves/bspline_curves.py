@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from .._validate import as_scalar
-from ._common import _control_points, _degree, _integer, _knot_vector, _parameters
+from .._validate import as_scalar, as_whole
+from ._common import _control_points, _degree, _knot_vector, _parameters
 
 __all__ = ["bspline", "bspline_basis", "bspline_basis_derivative", "bspline_derivative",
     "clamped_knots", "de_boor", "domain", "find_span", "insert_knot", "uniform_knots"]
@@ -42,7 +42,7 @@ def clamped_knots(n_control, degree):
     array([0.        , 0.        , 0.        , 0.33333333, 0.66666667,
            1.        , 1.        , 1.        ])
     """
-    n = _integer(n_control, "n_control", 2)
+    n = as_whole(n_control, "n_control", 2, at_least=True)
     p = _degree(degree, n)
     inner = np.arange(1, n - p) / (n - p)
     return np.concatenate([np.zeros(p + 1), inner, np.ones(p + 1)])
@@ -75,7 +75,7 @@ def uniform_knots(n_control, degree):
     >>> domain(uniform_knots(4, 2), 2)
     (0.0, 1.0)
     """
-    n = _integer(n_control, "n_control", 2)
+    n = as_whole(n_control, "n_control", 2, at_least=True)
     p = _degree(degree, n)
     return (np.arange(n + p + 1) - p) / (n - p)
 
@@ -255,7 +255,7 @@ def bspline_basis_derivative(knots, degree, t, order=1, full_range=False):
            [-1.,  0.,  1.]])
     """
     u, n, p, t, flat, spans = _basis_input(knots, degree, t, full_range)
-    k = _integer(order, "order", 0)
+    k = as_whole(order, "order", 0, at_least=True)
     if k > p:
         return np.zeros(t.shape + (n,))
     m = len(u) - 1
@@ -462,7 +462,7 @@ def insert_knot(control_points, knots, degree, u, times=1):
     knots, n = _knot_vector(knots, degree, len(p_ctrl))
     p = int(degree)
     ubar = float(_parameters(as_scalar(u, "u"), knots[p], knots[n], name="u"))
-    times = _integer(times, "times", 0)
+    times = as_whole(times, "times", 0, at_least=True)
     s = int(np.count_nonzero(knots == ubar))
     if s + times > p + 1:
         raise ValueError(f"times = {times} is too many: u = {ubar!r} already appears {s} times "

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from .._validate import as_array, as_scalar, as_vector
+from .._validate import as_array, as_positive, as_vector
 from ._common import _control_points, _knot_vector, NurbsCurve, _parameters, _weights
 from .bezier_curves import _bernstein_matrix
 from .bspline_curves import _de_boor
@@ -142,9 +142,7 @@ def nurbs_circle(radius=1.0, center=(0.0, 0.0)):
     >>> bool(np.allclose(np.linalg.norm(points - (1, 1), axis=1), 2.0, rtol=0, atol=1e-12))
     True
     """
-    r = as_scalar(radius, "radius")
-    if r <= 0:
-        raise ValueError(f"radius must be positive, got {r!r}")
+    r = as_positive(radius, "radius")
     c = as_vector(center, "center", 2)
     square = np.array([[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1],
                        [1, 0]], dtype=float)
@@ -177,9 +175,7 @@ def conic_type(w):
     >>> conic_type(0.5), conic_type(1), conic_type(3)
     ('ellipse', 'parabola', 'hyperbola')
     """
-    w = as_scalar(w, "w")
-    if w <= 0:
-        raise ValueError(f"w must be positive, got {w!r}")
+    w = as_positive(w, "w")
     return "ellipse" if w < 1 else "parabola" if w == 1 else "hyperbola"
 
 
@@ -221,7 +217,5 @@ def rational_quadratic_conic(p0, p1, p2, w, t):
     if a.ndim != 1 or len(a) < 1:
         raise ValueError(f"p0 must be a point (a vector of d >= 1 numbers), got shape {a.shape}")
     points = np.stack([a, as_vector(p1, "p1", len(a)), as_vector(p2, "p2", len(a))])
-    w = as_scalar(w, "w")
-    if w <= 0:
-        raise ValueError(f"w must be positive, got {w!r}")
+    w = as_positive(w, "w")
     return rational_bezier(points, [1.0, w, 1.0], t)

@@ -4,7 +4,7 @@ import numbers
 
 import numpy as np
 
-from .._validate import as_points, as_scalar
+from .._validate import as_points
 
 
 # The 3x3 block A of a quadric counts as singular when det(A) <= _SINGULAR * trace(A)**3. For a
@@ -84,21 +84,6 @@ def _index(value, count, name, what):
     if not 0 <= value < count:
         raise ValueError(f"{name} must be a {what} index from 0 to {count - 1}, got {value}")
     return value
-
-
-def _count(value, name, minimum=0):
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
-        raise TypeError(f"{name} must be a whole number, got {value!r}")
-    if value < minimum:
-        raise ValueError(f"{name} must be at least {minimum}, got {value}")
-    return int(value)
-
-
-def _as_positive(value, name):
-    v = as_scalar(value, name)
-    if v <= 0:
-        raise ValueError(f"{name} must be positive, got {value!r}")
-    return v
 
 
 def _compact(vertices, faces):

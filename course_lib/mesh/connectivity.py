@@ -6,7 +6,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._common import _count, _face_table, _vertices
+from .._validate import as_whole
+from ._common import _face_table, _vertices
 
 __all__ = ["MeshProblem", "mesh_problems"]
 
@@ -234,7 +235,7 @@ def mesh_problems(vertices, faces):
     faces 0 and 1 both run along the edge 0 -> 1 in the same direction: inconsistent winding (orientation); reverse the vertex order of one of them
     """
     if isinstance(vertices, numbers.Integral) and not isinstance(vertices, bool):
-        n = _count(vertices, "vertices")
+        n = as_whole(vertices, "vertices", 0, integer_type=True, at_least=True)
     else:
         n = len(_vertices(vertices))
     corners, starts = _face_table(faces)

@@ -7,7 +7,8 @@ a boundary (disc), and two that are not manifold (bow tie, three faces on an edg
 import numpy as np
 
 from .. import shapes
-from ._common import _as_positive, _compact, _count
+from .._validate import as_positive, as_whole
+from ._common import _compact
 
 __all__ = ["bow_tie", "cube", "disc", "double_torus", "icosphere", "tetrahedron",
     "three_faces_on_an_edge", "torus"]
@@ -102,10 +103,10 @@ def icosphere(subdivisions=0, radius=1.0):
     >>> [icosphere(s)[1].shape[0] for s in range(3)]
     [20, 80, 320]
     """
-    s = _count(subdivisions, "subdivisions")
+    s = as_whole(subdivisions, "subdivisions", 0, integer_type=True, at_least=True)
     if s > 8:
         raise ValueError(f"subdivisions must be at most 8 (20 * 4**8 = 1,310,720 faces), got {s}")
-    r = _as_positive(radius, "radius")
+    r = as_positive(radius, "radius")
     t = (1 + np.sqrt(5)) / 2
     v = np.array([[-1, t, 0], [1, t, 0], [-1, -t, 0], [1, -t, 0], [0, -1, t], [0, 1, t],
                   [0, -1, -t], [0, 1, -t], [t, 0, -1], [t, 0, 1], [-t, 0, -1], [-t, 0, 1]])
@@ -127,8 +128,9 @@ def torus(major=1.0, minor=0.4, segments=24, rings=12):
     >>> HalfEdgeMesh.from_faces(*torus()).genus()
     1
     """
-    return shapes.torus(_as_positive(major, "major"), _as_positive(minor, "minor"),
-                        _count(segments, "segments", 3), _count(rings, "rings", 3))
+    return shapes.torus(as_positive(major, "major"), as_positive(minor, "minor"),
+                        as_whole(segments, "segments", 3, integer_type=True, at_least=True),
+                        as_whole(rings, "rings", 3, integer_type=True, at_least=True))
 
 
 def double_torus(major=1.0, minor=0.4, segments=24, rings=12, gap=None):
@@ -165,9 +167,10 @@ def double_torus(major=1.0, minor=0.4, segments=24, rings=12, gap=None):
     >>> m.euler_characteristic(), m.genus(), m.is_closed()
     (-2, 2, True)
     """
-    major, minor = _as_positive(major, "major"), _as_positive(minor, "minor")
-    s, r = _count(segments, "segments", 6), _count(rings, "rings", 4)
-    gap = minor / 2 if gap is None else _as_positive(gap, "gap")
+    major, minor = as_positive(major, "major"), as_positive(minor, "minor")
+    s = as_whole(segments, "segments", 6, integer_type=True, at_least=True)
+    r = as_whole(rings, "rings", 4, integer_type=True, at_least=True)
+    gap = minor / 2 if gap is None else as_positive(gap, "gap")
     if minor >= major:
         raise ValueError(f"minor must be smaller than major (a ring torus), got {minor} >= {major}")
     v, f = shapes.torus(major, minor, s, r)
@@ -227,8 +230,9 @@ def disc(rings=4, segments=16, radius=1.0):
     >>> m.euler_characteristic(), m.boundary_components()
     (1, 1)
     """
-    k, s = _count(rings, "rings", 1), _count(segments, "segments", 3)
-    rad = _as_positive(radius, "radius")
+    k = as_whole(rings, "rings", 1, integer_type=True, at_least=True)
+    s = as_whole(segments, "segments", 3, integer_type=True, at_least=True)
+    rad = as_positive(radius, "radius")
     angle = 2 * np.pi * np.arange(s) / s
     radii = rad * np.arange(1, k + 1) / k
     ring_pts = np.stack([radii[:, None] * np.cos(angle), radii[:, None] * np.sin(angle),

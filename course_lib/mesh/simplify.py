@@ -6,8 +6,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._validate import as_scalar
-from ._common import _compact, _count, _SINGULAR
+from .._validate import as_scalar, as_whole
+from ._common import _compact, _SINGULAR
 from .geometry import collapse_cost, _cost10, _optimal, _UPPER, vertex_quadrics
 from .half_edge import HalfEdgeMesh
 
@@ -115,7 +115,7 @@ class SimplificationRecord:
     def _replay(self, k):
         """After `k` collapses: each original vertex's surviving representative, the positions
         (original indexing) and which original faces are gone."""
-        k = _count(k, "k")
+        k = as_whole(k, "k", 0, integer_type=True, at_least=True)
         if k > len(self):
             raise ValueError(f"k must be at most the number of collapses {len(self)}, got {k}")
         rep = np.arange(len(self.vertices))
@@ -196,7 +196,7 @@ class SimplificationRecord:
         >>> bool(np.isclose(head[0].cost, rec.collapses[3].cost))   # the next collapse: cheapest
         True
         """
-        top = _count(top, "top")
+        top = as_whole(top, "top", 0, integer_type=True, at_least=True)
         rep, pos, dead = self._replay(k)
         alive = np.flatnonzero(~dead)
         faces = rep[self.faces[alive]]
@@ -570,7 +570,7 @@ def simplify_qem(vertices, faces, target_faces, record=True, max_angle=np.pi / 2
     if not isinstance(tri, np.ndarray) or tri.shape[1] != 3:
         raise ValueError("simplify_qem needs a triangle mesh (faces of 3 vertices); split the "
                          "polygons into triangles first")
-    target = _count(target_faces, "target_faces")
+    target = as_whole(target_faces, "target_faces", 0, integer_type=True, at_least=True)
     angle = as_scalar(max_angle, "max_angle")
     if not 0 < angle <= np.pi:
         raise ValueError(f"max_angle must be in (0, pi] radians, got {max_angle!r}")

@@ -58,22 +58,6 @@ def _t_max(value, t_min):
     return t
 
 
-def _positive(value, name, what="positive"):
-    v = as_scalar(value, name)
-    if v <= 0:
-        raise ValueError(f"{name} must be {what}, got {v}")
-    return v
-
-
-def _whole(value, name, minimum):
-    if isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be a whole number, got a bool")
-    v = as_scalar(value, name)
-    if v < minimum or v != int(v):
-        raise ValueError(f"{name} must be a whole number >= {minimum}, got {value!r}")
-    return int(v)
-
-
 def _indices(value, name):
     """Refractive indices: positive numbers (arrays allowed)."""
     eta = as_array(value, name)
@@ -91,14 +75,3 @@ def _unit_vectors(value, name):
                          f"{_where(int(np.argmin(length.ravel())), length.shape)}: it has no "
                          "direction")
     return v / length[..., None]
-
-
-def _rgb(value, name):
-    c = as_array(value, name)
-    if c.ndim == 0:
-        c = np.full(3, float(c))
-    if c.shape != (3,):
-        raise ValueError(f"{name} must be a number (grey) or an RGB triple, got shape {c.shape}")
-    if np.any(c < 0):
-        raise ValueError(f"{name} must not be negative, got {c.tolist()}")
-    return c

@@ -6,8 +6,8 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import viewing
-from .._validate import as_scalar, as_vector
-from ._common import _dot, _whole
+from .._validate import as_rng, as_scalar, as_vector, as_whole
+from ._common import _dot
 
 __all__ = ["Camera", "CameraRays", "camera_rays"]
 
@@ -37,7 +37,7 @@ class CameraRays(NamedTuple):
 
 
 def _samples_per_pixel(value):
-    s = _whole(value, "samples_per_pixel", 1)
+    s = as_whole(value, "samples_per_pixel", 1)
     k = int(round(np.sqrt(s)))
     if k * k != s:
         raise ValueError(f"samples_per_pixel must be a perfect square (1, 4, 9, 16, ...) so that "
@@ -110,13 +110,13 @@ def camera_rays(eye, gaze, up, fov_y, width, height, samples_per_pixel=1, seed=N
     fov = as_scalar(fov_y, "fov_y")
     if not 0 < fov < np.pi:
         raise ValueError(f"fov_y must be an angle in radians between 0 and pi, got {fov}")
-    w = _whole(width, "width", 1)
-    h = _whole(height, "height", 1)
+    w = as_whole(width, "width", 1)
+    h = as_whole(height, "height", 1)
     s, k = _samples_per_pixel(samples_per_pixel)
     proj = viewing.perspective(fov, w / h, 1.0, 2.0)
     a, b = np.divmod(np.arange(s), k)                       # sub-pixel row a, column b
     if jitter:
-        rng = np.random.default_rng(seed)
+        rng = as_rng(seed)
         sx = (b + rng.random((h, w, s))) / k
         sy = (a + rng.random((h, w, s))) / k
     else:
@@ -172,8 +172,8 @@ class Camera:
         object.__setattr__(self, "gaze", as_vector(self.gaze, "gaze", 3))
         object.__setattr__(self, "up", as_vector(self.up, "up", 3))
         object.__setattr__(self, "fov_y", fov)
-        object.__setattr__(self, "width", _whole(self.width, "width", 1))
-        object.__setattr__(self, "height", _whole(self.height, "height", 1))
+        object.__setattr__(self, "width", as_whole(self.width, "width", 1))
+        object.__setattr__(self, "height", as_whole(self.height, "height", 1))
 
     def rays(self, samples_per_pixel=1, seed=None, jitter=False):
         """The camera's rays, :func:`camera_rays` with its parameters."""
@@ -192,8 +192,8 @@ class Camera:
         ray as ``self.rays()`` gives for that pixel). Raises ValueError for a pixel outside the
         image.
         """
-        j = _whole(row, "row", 0)
-        i = _whole(column, "column", 0)
+        j = as_whole(row, "row", 0)
+        i = as_whole(column, "column", 0)
         if j >= self.height or i >= self.width:
             raise ValueError(f"pixel (row {j}, column {i}) lies outside the {self.width} x "
                              f"{self.height} image (rows 0..{self.height - 1}, columns "

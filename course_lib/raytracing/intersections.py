@@ -4,9 +4,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._validate import as_array, as_vector
+from .._validate import as_array, as_positive, as_vector, as_whole
 from ..visibility.ray_casting import _moller_trumbore_soa as _moller_trumbore
-from ._common import _dot, _positive, _rays, _t_max, _t_min, _unit_vectors, _whole
+from ._common import _dot, _rays, _t_max, _t_min, _unit_vectors
 
 __all__ = ["BVH", "BoxHits", "SurfaceHits", "TriangleHits", "intersect_box", "intersect_plane",
     "intersect_sphere", "intersect_triangles"]
@@ -115,7 +115,7 @@ def intersect_sphere(origins, directions, center, radius, t_min=0.0):
     """
     o, d, lead = _rays(origins, directions)
     c = as_vector(center, "center", 3)
-    r = _positive(radius, "radius", "positive (the sphere's radius)")
+    r = as_positive(radius, "radius", "the sphere's radius")
     t_min = _t_min(t_min)
     t = _first_root(*_sphere_roots(o, d, c, r), t_min)
     hit = np.isfinite(t)
@@ -420,7 +420,7 @@ class BVH:
 
     def __init__(self, triangles, leaf_size=4):
         tris = _triangles(triangles)
-        self.leaf_size = _whole(leaf_size, "leaf_size", 1)
+        self.leaf_size = as_whole(leaf_size, "leaf_size", 1)
         self.triangles = tris
         self._soa = _soa(tris)
         self._normals = _unit_face_normals(tris)

@@ -5,8 +5,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import shading
-from .._validate import as_points, as_scalar, as_vector
-from ._common import _dot, _positive, _rgb, _unit_vectors
+from .._validate import as_points, as_positive, as_rgb, as_scalar, as_vector
+from ._common import _dot, _unit_vectors
 from .camera import Camera
 from .intersections import BVH
 
@@ -69,8 +69,8 @@ class Material:
                              f"return more light than it receives), got {kr:g} + {kt:g}")
         object.__setattr__(self, "reflectivity", kr)
         object.__setattr__(self, "transparency", kt)
-        object.__setattr__(self, "ior", _positive(self.ior, "ior",
-                                                  "positive (a refractive index)"))
+        object.__setattr__(self, "ior", as_positive(self.ior, "ior",
+                                                   "a refractive index"))
 
 
 @dataclass(frozen=True, eq=False)
@@ -95,8 +95,8 @@ class Sphere:
 
     def __post_init__(self):
         object.__setattr__(self, "center", as_vector(self.center, "center", 3))
-        object.__setattr__(self, "radius", _positive(self.radius, "radius",
-                                                     "positive (the sphere's radius)"))
+        object.__setattr__(self, "radius", as_positive(self.radius, "radius",
+                                                      "the sphere's radius"))
         _check_material(self.material)
 
 
@@ -134,7 +134,7 @@ class Plane:
         _check_material(self.material)
         if self.checker is not None:
             _check_material(self.checker, "checker")
-        object.__setattr__(self, "checker_size", _positive(self.checker_size, "checker_size"))
+        object.__setattr__(self, "checker_size", as_positive(self.checker_size, "checker_size"))
 
     def _axes(self):
         """Two unit vectors spanning the plane: the checkerboard's axes."""
@@ -256,5 +256,7 @@ class Scene:
             raise TypeError(f"camera must be a Camera or None, got {type(self.camera).__name__}")
         object.__setattr__(self, "objects", objects)
         object.__setattr__(self, "lights", lights)
-        object.__setattr__(self, "ambient", _rgb(self.ambient, "ambient"))
-        object.__setattr__(self, "background", _rgb(self.background, "background"))
+        object.__setattr__(self, "ambient", as_rgb(self.ambient, "ambient",
+                                                      maximum=None, single=True))
+        object.__setattr__(self, "background", as_rgb(self.background, "background",
+                                                         maximum=None, single=True))

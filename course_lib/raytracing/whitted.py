@@ -5,8 +5,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._validate import as_scalar, as_vector
-from ._common import DEFAULT_EPSILON, _nonzero_vectors, _positive, _whole
+from .._validate import as_positive, as_scalar, as_vector, as_whole
+from ._common import DEFAULT_EPSILON, _nonzero_vectors
 from .camera import Camera
 from .hits import _Compiled, _generation
 
@@ -45,8 +45,8 @@ class RayCounts(NamedTuple):
 
 
 def _render_options(max_depth, epsilon, min_weight):
-    depth = _whole(max_depth, "max_depth", 0)
-    eps = _positive(epsilon, "epsilon", "positive (the offset of secondary rays)")
+    depth = as_whole(max_depth, "max_depth", 0)
+    eps = as_positive(epsilon, "epsilon", "the offset of secondary rays")
     mw = as_scalar(min_weight, "min_weight")
     if not 0 <= mw < 1:
         raise ValueError(f"min_weight must lie in [0, 1), got {mw}")

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from .._validate import as_array, as_scalar, as_vector
+from .._validate import as_array, as_vector
 
 
 # ---------------------------------------------------------------------------------------------
@@ -31,25 +31,3 @@ def _spacing(value, dim, name="spacing"):
         raise ValueError(f"{name} must be positive along every axis (the distance between "
                          f"neighbouring samples), got {tuple(float(v) for v in s)}")
     return s
-
-
-def _positive(value, name):
-    v = as_scalar(value, name)
-    if v <= 0:
-        raise ValueError(f"{name} must be positive, got {v:g}")
-    return v
-
-
-def _whole(value, name, minimum):
-    if isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be a whole number, got a bool")
-    v = as_scalar(value, name)
-    if v != int(v) or v < minimum:
-        raise ValueError(f"{name} must be a whole number >= {minimum}, got {value!r}")
-    return int(v)
-
-
-def _choice(value, name, options):
-    if value not in options:
-        raise ValueError(f"{name} must be one of {', '.join(map(repr, options))}, got {value!r}")
-    return value

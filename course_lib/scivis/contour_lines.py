@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from .._validate import as_array, as_scalar, as_vector
-from ._common import _choice, _grid, _spacing
+from .._validate import as_array, as_choice, as_scalar, as_vector
+from ._common import _grid, _spacing
 
 __all__ = ["SQUARE_SADDLES_CENTRE_ABOVE", "SQUARE_TABLE", "isolines", "join_segments",
     "marching_squares", "marching_squares_cases", "saddle_centre_above"]
@@ -204,7 +204,7 @@ def marching_squares(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0), saddle
     c = as_scalar(level, "level")
     dx, dy = _spacing(spacing, 2)
     x0, y0 = as_vector(origin, "origin", 2)
-    _choice(saddles, "saddles", ("midpoint", "opposite"))
+    as_choice(saddles, "saddles", ("midpoint", "opposite"))
     cases = _square_cases(f, c).astype(np.intp)
     saddle = (cases == 5) | (cases == 10)
     ext = cases.copy()

@@ -4,8 +4,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._validate import as_array, as_points
-from ._common import _choice, _whole
+from .._validate import as_array, as_choice, as_points, as_whole
 
 __all__ = ["Field", "example_field_2d", "example_vector_field", "example_volume",
     "sample_vector_field"]
@@ -50,7 +49,7 @@ class Field(NamedTuple):
 
 
 def _cube_grid(size, dim):
-    n = _whole(size, "size", 2)
+    n = as_whole(size, "size", 2)
     h = 2.0 / (n - 1)
     axis = np.linspace(-1.0, 1.0, n)
     coords = np.meshgrid(*([axis] * dim), indexing="ij")[::-1]     # x varies along the last axis
@@ -84,7 +83,7 @@ def example_field_2d(kind="hills", size=64):
            [ 1.,  0.,  1.],
            [ 0., -1.,  0.]])
     """
-    _choice(kind, "kind", _FIELDS_2D)
+    as_choice(kind, "kind", _FIELDS_2D)
     (x, y), spacing, origin = _cube_grid(size, 2)
     if kind == "hills":
         values = (np.exp(-((x - 0.4) ** 2 + (y + 0.1) ** 2) / 0.12)
@@ -145,7 +144,7 @@ def example_volume(kind="sphere", size=64):
     >>> float(n.values[0, 0, 0]), float(n.values[1:-1, 1:-1, 1:-1].max()), n.level
     (-2.0, 1.0, 0.3)
     """
-    _choice(kind, "kind", _VOLUMES)
+    as_choice(kind, "kind", _VOLUMES)
     (x, y, z), spacing, origin = _cube_grid(size, 3)
     if kind == "sphere":
         values, level = 0.6 - np.sqrt(x ** 2 + y ** 2 + z ** 2), 0.0
@@ -214,8 +213,7 @@ def example_vector_field(kind="vortex", dim=2):
     array([[ 0.,  1.],
            [-2.,  0.]])
     """
-    if dim not in (2, 3):
-        raise ValueError(f"dim must be 2 or 3, got {dim!r}")
+    as_choice(dim, "dim", (2, 3))
     formula = _VECTOR_FIELDS[dim].get(kind)
     if formula is None:
         raise ValueError(f"kind must be one of {', '.join(map(repr, _VECTOR_FIELDS[dim]))} for "
@@ -245,8 +243,7 @@ def sample_vector_field(velocity, size=16, dim=2):
     >>> f.values.shape, f.values[0, 2]
     ((3, 3, 2), array([ 1., -1.]))
     """
-    if dim not in (2, 3):
-        raise ValueError(f"dim must be 2 or 3, got {dim!r}")
+    as_choice(dim, "dim", (2, 3))
     coords, spacing, origin = _cube_grid(size, dim)
     points = np.stack(coords, axis=-1)
     values = as_array(velocity(points), "velocity(points)")

@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from .._validate import as_array, as_points, as_scalar, as_vector
-from ._common import _choice, _spacing, _whole
+from .._validate import as_array, as_choice, as_points, as_scalar, as_vector, as_whole
+from ._common import _spacing
 from .grids import _lerp_grid
 
 __all__ = ["streamline"]
@@ -113,7 +113,7 @@ def streamline(velocity, seeds, step, n_steps=100, method="rk4", spacing=None, o
     >>> float(np.linalg.norm(line[-1]).round(6))
     1.0
     """
-    _choice(method, "method", ("euler", "rk2", "rk4"))
+    as_choice(method, "method", ("euler", "rk2", "rk4"))
     p = as_points(seeds, "seeds", dims=(2, 3))
     single = p.ndim == 1
     p = p.reshape(-1, p.shape[-1])
@@ -121,7 +121,7 @@ def streamline(velocity, seeds, step, n_steps=100, method="rk4", spacing=None, o
     h = as_scalar(step, "step")
     if h == 0:
         raise ValueError("step must not be zero (a negative step traces upstream)")
-    n = _whole(n_steps, "n_steps", 1)
+    n = as_whole(n_steps, "n_steps", 1)
     speed_min = as_scalar(min_speed, "min_speed")
     sampler, lo, hi = _velocity_sampler(velocity, dim, spacing, origin, bounds)
 

@@ -2,8 +2,7 @@
 
 import numpy as np
 
-from .._validate import as_points, as_scalar
-from ._common import _positive
+from .._validate import as_points, as_positive, as_scalar
 
 __all__ = ["arrows", "hedgehog"]
 
@@ -91,10 +90,10 @@ def arrows(points, vectors, scale=1.0, head_length=0.3, head_width=0.3, shaft_wi
     """
     p, v = _glyph_inputs(points, vectors, 2)
     s = as_scalar(scale, "scale")
-    hl = _positive(head_length, "head_length")
+    hl = as_positive(head_length, "head_length")
     if hl > 1:
         raise ValueError(f"head_length must be at most 1 (a fraction of the arrow), got {hl:g}")
-    hw, sw = _positive(head_width, "head_width"), _positive(shaft_width, "shaft_width")
+    hw, sw = as_positive(head_width, "head_width"), as_positive(shaft_width, "shaft_width")
     d = s * v                                     # along the arrow, length L
     n = np.stack([-d[..., 1], d[..., 0]], axis=-1)  # to the left, also length L
     neck = p + (1 - hl) * d

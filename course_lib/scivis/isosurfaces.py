@@ -4,8 +4,8 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._validate import as_array, as_points, as_scalar, as_vector
-from ._common import _choice, _grid, _spacing, _whole
+from .._validate import as_array, as_choice, as_mesh, as_scalar, as_vector, as_whole
+from ._common import _grid, _spacing
 from .contour_lines import SQUARE_SADDLES_CENTRE_ABOVE, SQUARE_TABLE
 
 __all__ = ["CENTRE", "CUBE_CORNERS", "CUBE_EDGES", "cube_triangles", "enclosed_volume",
@@ -158,10 +158,10 @@ def cube_triangles(case, connected_faces=0):
     >>> cube_triangles(0b11).shape
     (2, 3)
     """
-    case = _whole(case, "case", 0)
+    case = as_whole(case, "case", 0)
     if case > 255:
         raise ValueError(f"case must be a whole number in 0-255 (8 corner bits), got {case}")
-    connected = _whole(connected_faces, "connected_faces", 0)
+    connected = as_whole(connected_faces, "connected_faces", 0)
     if connected > 63:
         raise ValueError(f"connected_faces must be a 6-bit mask (0-63), got {connected}")
     triangles, _ = _trace_cube(case, connected & _ambiguous_faces(case))
@@ -325,7 +325,7 @@ def marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0
     c = as_scalar(level, "level")
     sp = _spacing(spacing, 3)
     org = as_vector(origin, "origin", 3)
-    _choice(table, "table", ("consistent", "classic"))
+    as_choice(table, "table", ("consistent", "classic"))
     nz, ny, nx = v.shape
     cases = _cube_cases(v, c).ravel()
     active = np.flatnonzero((cases != 0) & (cases != 255))
@@ -375,31 +375,20 @@ def marching_cubes(volume, level, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0
     return vertices, triangles.reshape(-1, 3).astype(np.intp)
 
 
-def _mesh(vertices, triangles):
-    v = as_points(vertices, "vertices", dims=3)
-    t = np.asarray(triangles)
-    if v.ndim != 2:
-        raise ValueError(f"vertices must be an (n, 3) array, got shape {v.shape}")
-    if t.size == 0:
-        return v, np.zeros((0, 3), dtype=np.intp)
-    if t.ndim != 2 or t.shape[1] != 3 or not np.issubdtype(t.dtype, np.integer):
-        raise ValueError(f"triangles must be an (m, 3) array of vertex indices, got shape "
-                         f"{t.shape} and type {t.dtype}")
-    if t.min() < 0 or t.max() >= len(v):
-        raise ValueError(f"triangles refer to vertex {int(t.max())} but there are {len(v)} "
-                         "vertices")
-    return v, t
-
-
 def surface_area(vertices, triangles):
     r"""Total area of a triangle mesh, :math:`\sum \frac12 |(b - a) \times (c - a)|`.
+
+    An empty mesh, as :func:`marching_cubes` returns for a level outside the data's range, has
+    area 0.
 
     Examples
     --------
     >>> surface_area([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
     0.5
+    >>> surface_area(*marching_cubes(np.zeros((3, 3, 3)), 1.0))
+    0.0
     """
-    v, t = _mesh(vertices, triangles)
+    v, t = as_mesh(vertices, triangles, "triangles", empty=True)
     a, b, c = v[t[:, 0]], v[t[:, 1]], v[t[:, 2]]
     return float(0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1).sum())
 
@@ -411,7 +400,7 @@ def enclosed_volume(vertices, triangles):
 
     Each term is the signed volume of the tetrahedron (origin, a, b, c); the parts outside the
     surface cancel. Positive when the normals point outwards (counter-clockwise seen from
-    outside), as :func:`marching_cubes` makes them.
+    outside), as :func:`marching_cubes` makes them. An empty mesh encloses volume 0.
 
     Examples
     --------
@@ -421,7 +410,7 @@ def enclosed_volume(vertices, triangles):
     >>> round(enclosed_volume(v, [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]), 12)
     0.166666666667
     """
-    v, t = _mesh(vertices, triangles)
+    v, t = as_mesh(vertices, triangles, "triangles", empty=True)
     a, b, c = v[t[:, 0]], v[t[:, 1]], v[t[:, 2]]
     return float(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)
 

@@ -4,9 +4,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._validate import as_array, as_rotation_matrix, as_scalar, as_vector
+from .._validate import (as_array, as_choice, as_positive, as_rotation_matrix, as_scalar,
+    as_vector, as_whole)
 from ..colormaps import rgba_transfer, transfer_preset, TransferFunction
-from ._common import _choice, _grid, _positive, _spacing, _whole
+from ._common import _grid, _spacing
 from .grids import _lerp_grid
 from .isosurfaces import CUBE_CORNERS
 
@@ -86,7 +87,7 @@ def _view_window(shape, sp, org, rotation, image_size, extent):
             raise ValueError(f"rotation must be a single 3x3 rotation, got shape {rot.shape}")
     radius = 0.5 * np.linalg.norm(hi - lo)
     if isinstance(extent, str):
-        _choice(extent, "extent", ("fit", "sphere"))
+        as_choice(extent, "extent", ("fit", "sphere"))
         if extent == "fit":
             q = (lo + (hi - lo) * CUBE_CORNERS - centre) @ rot.T
             umin, vmin = q[:, :2].min(axis=0)
@@ -160,7 +161,7 @@ def _march_setup(volume, spacing, origin, rotation, image_size, extent, step):
     v = _grid(volume, "volume", 3)
     sp = _spacing(spacing, 3)
     org = as_vector(origin, "origin", 3)
-    h = 0.5 * sp.min() if step is None else _positive(step, "step")
+    h = 0.5 * sp.min() if step is None else as_positive(step, "step")
     rays = _cast_rays(v.shape, sp, org, rotation, image_size, extent)
     # samples at t_near + k h, k = 0 .. floor(L / h): both ends of the path are sampled
     n = np.where(rays.hit, np.floor(rays.length / h + 1e-9).astype(np.intp) + 1, 0)
@@ -245,7 +246,7 @@ def volume_render(volume, transfer="ramp", rotation=None, image_size=None, step=
     v, sp, org, h, rays, n = _march_setup(volume, spacing, origin, rotation, image_size, extent,
                                           step)
     tf = _rgba_transfer(transfer, v)
-    unit = sp.min() if unit_length is None else _positive(unit_length, "unit_length")
+    unit = sp.min() if unit_length is None else as_positive(unit_length, "unit_length")
     if early_termination is None:
         threshold = None
     else:
@@ -380,9 +381,9 @@ class RaySamples:
         values = _grid(volume, "volume", 3)
         sp = _spacing(spacing, 3)
         org = as_vector(origin, "origin", 3)
-        self.unit = float(sp.min()) if unit_length is None else _positive(unit_length,
+        self.unit = float(sp.min()) if unit_length is None else as_positive(unit_length,
                                                                           "unit_length")
-        self.step = 0.5 * float(sp.min()) if step is None else _positive(step, "step")
+        self.step = 0.5 * float(sp.min()) if step is None else as_positive(step, "step")
         if value_range is None:                        # a constant volume: one unit above
             low = float(values.min())
             value_range = (low, max(float(values.max()), low + 1.0))
@@ -391,7 +392,7 @@ class RaySamples:
             raise ValueError(f"value_range must be (low, high) with low < high, got "
                              f"{tuple(float(x) for x in value_range)}")
         self.value_range = (float(lo_value), float(hi_value))
-        self.lut_size = _whole(lut_size, "lut_size", 2)
+        self.lut_size = as_whole(lut_size, "lut_size", 2)
         lo, hi, centre, radius, rot, u, v, size = _view_window(values.shape, sp, org, rotation,
                                                                image_size, extent)
         depth = np.arange(radius, -radius - 1e-9, -self.step)          # front to back
@@ -555,7 +556,7 @@ def composite(colors, opacities, order="front-to-back", cumulative=False):
     >>> composite([[1, 0, 0], [0, 0, 1]], [0.5, 0.5], order="back-to-front")
     (array([0.5 , 0.  , 0.25]), 0.75)
     """
-    _choice(order, "order", ("front-to-back", "back-to-front"))
+    as_choice(order, "order", ("front-to-back", "back-to-front"))
     a = as_array(opacities, "opacities")
     c = as_array(colors, "colors")
     if a.ndim == 0:

@@ -25,21 +25,6 @@ def _unit(value, name):
     return v / length[..., None]
 
 
-def _rgb(value, name, low=0.0, high=None):
-    """A colour: a number (grey), an RGB triple, or per-point colours (..., 3) or (..., 1)."""
-    c = as_array(value, name)
-    if c.ndim == 0:
-        c = np.full(3, float(c))
-    elif c.shape[-1] not in (1, 3):
-        raise ValueError(f"{name} must be a number (grey) or RGB triples (shape (3,) or "
-                         f"(..., 3)), got shape {c.shape}")
-    if np.any(c < low) or (high is not None and np.any(c > high)):
-        bad = c[(c < low) | ((c > high) if high is not None else False)].flat[0]
-        rng = f"[{low:g}, {high:g}]" if high is not None else f">= {low:g}"
-        raise ValueError(f"{name} must lie in {rng}, got {bad:g}")
-    return c
-
-
 def _shininess(value):
     n = as_array(value, "shininess")
     if np.any(n <= 0):

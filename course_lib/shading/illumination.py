@@ -4,8 +4,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._validate import as_array, as_points, broadcast_stacks
-from ._common import _dot, _rgb, _shininess, _unit
+from .._validate import as_array, as_points, as_rgb, broadcast_stacks
+from ._common import _dot, _shininess, _unit
 from .materials import Light, Material
 
 __all__ = ["PhongTerms", "blinn_phong", "phong"]
@@ -70,12 +70,12 @@ def _illuminate(points, normals, view, lights, material, ambient, light_visibili
     elif any(light.position is not None for light in lights):
         raise ValueError("points are needed for point lights (L and the distance depend on the "
                          "point); pass them, or use directional lights only")
-    ka = _rgb(material.ka, "ka", 0.0, 1.0)
-    kd = _rgb(material.kd, "kd", 0.0, 1.0)
-    ks = _rgb(material.ks, "ks", 0.0, 1.0)
-    ke = _rgb(material.emission, "emission")
+    ka = as_rgb(material.ka, "ka")
+    kd = as_rgb(material.kd, "kd")
+    ks = as_rgb(material.ks, "ks")
+    ke = as_rgb(material.emission, "emission", maximum=None)
     shin = _shininess(material.shininess)
-    ia = _rgb(ambient, "ambient")
+    ia = as_rgb(ambient, "ambient", maximum=None)
     stacks = dict(normals=(n, 1), view=(v, 1), ka=(ka, 1), kd=(kd, 1), ks=(ks, 1),
                   emission=(ke, 1), shininess=(shin, 0), ambient=(ia, 1))
     if p is not None:

@@ -5,9 +5,10 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import visibility
-from .._validate import as_matrix, as_points, as_scalar, as_vector
+from .._validate import (as_choice, as_matrix, as_mesh, as_points, as_positive, as_rgb,
+    as_vector, as_whole)
 from ..mesh.geometry import face_cross_products, face_normals   # re-exported: the one face normal
-from ._common import _dot, _rgb
+from ._common import _dot
 from .illumination import blinn_phong, _lights, phong
 from .materials import Material
 
@@ -19,18 +20,6 @@ __all__ = ["BarycentricBuffers", "ShadedImage", "barycentric_buffers", "face_nor
 # Meshes: normals and interpolated shading
 # ---------------------------------------------------------------------------------------------
 
-def _mesh(vertices, faces):
-    v = as_points(vertices, "vertices", dims=3)
-    if v.ndim != 2 or len(v) == 0:
-        raise ValueError(f"vertices must be an (n, 3) array with n >= 1, got shape {v.shape}")
-    f = np.asarray(faces)
-    if f.ndim != 2 or f.shape[1] != 3 or not np.issubdtype(f.dtype, np.integer) or len(f) == 0:
-        raise ValueError(f"faces must be a non-empty (m, 3) array of vertex indices, got shape "
-                         f"{f.shape} and type {f.dtype}")
-    if f.min() < 0 or f.max() >= len(v):
-        raise ValueError(f"faces refers to vertex {int(f.max() if f.max() >= len(v) else f.min())}"
-                         f" but there are {len(v)} vertices")
-    return v, f.astype(np.intp)
 
 
 def vertex_normals(vertices, faces):
@@ -67,7 +56,7 @@ def vertex_normals(vertices, faces):
     >>> vertex_normals(v, f)[0]
     array([0., 0., 1.])
     """
-    v, f = _mesh(vertices, faces)
+    v, f = as_mesh(vertices, faces)
     c = face_cross_products(v, f)
     acc = np.zeros_like(v)
     for k in range(3):
@@ -110,13 +99,8 @@ def uv_sphere(radius=1.0, segments=32, rings=16, center=(0.0, 0.0, 0.0)):
     >>> v.shape, f.shape, bool(np.allclose(np.linalg.norm(v, axis=1), 1))
     ((26, 3), (48, 3), True)
     """
-    r = as_scalar(radius, "radius")
-    if r <= 0:
-        raise ValueError(f"radius must be positive, got {r}")
-    if int(segments) != segments or segments < 3 or int(rings) != rings or rings < 2:
-        raise ValueError(f"segments must be a whole number >= 3 and rings >= 2, got {segments} "
-                         f"and {rings}")
-    segments, rings = int(segments), int(rings)
+    r = as_positive(radius, "radius")
+    segments, rings = as_whole(segments, "segments", 3), as_whole(rings, "rings", 2)
     c = as_vector(center, "center", 3)
     lat = np.pi / 2 - np.pi * np.arange(1, rings) / rings           # from the north pole down
     lon = 2 * np.pi * np.arange(segments) / segments
@@ -210,7 +194,7 @@ def barycentric_buffers(vertices, faces, view, projection, width, height,
     >>> bool(np.allclose(buffers.weights[seen].sum(axis=1), 1)), int(seen.sum()) > 50
     (True, True)
     """
-    v, f = _mesh(vertices, faces)
+    v, f = as_mesh(vertices, faces)
     corners = np.tile(np.eye(3), (len(f), 1))
     zb = visibility.render_depth(v[f].reshape(-1, 3), np.arange(3 * len(f)).reshape(-1, 3),
                                  view, projection, width, height, values=corners,
@@ -357,15 +341,13 @@ def render_shaded(vertices, faces, view, projection, width, height, lights, mate
     >>> bool(np.allclose(again.image, smooth.image))
     True
     """
-    if shading not in ("flat", "gouraud", "phong"):
-        raise ValueError(f"shading must be 'flat', 'gouraud' or 'phong', got {shading!r}")
-    if model not in ("phong", "blinn"):
-        raise ValueError(f"model must be 'phong' or 'blinn', got {model!r}")
+    as_choice(shading, "shading", ("flat", "gouraud", "phong"))
+    as_choice(model, "model", ("phong", "blinn"))
     illuminate = phong if model == "phong" else blinn_phong
-    v, f = _mesh(vertices, faces)
+    v, f = as_mesh(vertices, faces)
     view = as_matrix(view, "view", 4)
     projection = as_matrix(projection, "projection", 4)
-    bg = np.broadcast_to(_rgb(background, "background"), (3,))
+    bg = np.broadcast_to(as_rgb(background, "background", maximum=None), (3,))
     lights = _lights(lights)
     eye, v_const = _eye_and_view(view, projection)
     if fragments is not None and (not isinstance(fragments, BarycentricBuffers)

@@ -4,8 +4,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._validate import as_array, as_scalar, as_vector
-from ._common import _rgb, _shininess, _unit
+from .._validate import as_array, as_rgb, as_scalar, as_vector
+from ._common import _shininess, _unit
 
 __all__ = ["Light", "Material", "attenuation", "colored_material", "directional_light",
     "material_per_point", "point_light"]
@@ -82,14 +82,14 @@ def colored_material(color, ka=0.1, kd=0.7, ks=0.2, shininess=32.0, specular_col
     >>> m.kd
     array([0.6, 0.3, 0. ])
     """
-    color = _rgb(color, "color", 0.0, 1.0)
-    specular_color = _rgb(specular_color, "specular_color", 0.0, 1.0)
+    color = as_rgb(color, "color")
+    specular_color = as_rgb(specular_color, "specular_color")
     ka, kd, ks = (as_scalar(k, name) for k, name in ((ka, "ka"), (kd, "kd"), (ks, "ks")))
     for k, name in ((ka, "ka"), (kd, "kd"), (ks, "ks")):
         if not 0 <= k <= 1:
             raise ValueError(f"{name} must lie in [0, 1], got {k:g}")
     return Material(ka * color, kd * color, ks * specular_color,
-                    float(_shininess(shininess)), _rgb(emission, "emission"))
+                    float(_shininess(shininess)), as_rgb(emission, "emission", maximum=None))
 
 
 def material_per_point(materials, ids):
@@ -137,7 +137,7 @@ def material_per_point(materials, ids):
     for field in ("ka", "kd", "ks", "emission"):
         rows = []
         for m in materials:
-            c = _rgb(getattr(m, field), field)
+            c = as_rgb(getattr(m, field), field, maximum=None)
             if c.shape not in ((3,), (1,)):
                 raise ValueError(f"{field} of each material must be one colour, got shape "
                                  f"{c.shape}")
@@ -215,7 +215,7 @@ def point_light(position, intensity=1.0, attenuation=(1.0, 0.0, 0.0)):
     >>> light.intensity, light.attenuation
     (array([1. , 1. , 0.5]), (1.0, 0.0, 0.1))
     """
-    intensity = _rgb(intensity, "intensity")
+    intensity = as_rgb(intensity, "intensity", maximum=None)
     if intensity.shape != (3,):
         raise ValueError(f"intensity must be one number or one RGB triple, got shape "
                          f"{intensity.shape}")
@@ -247,7 +247,7 @@ def directional_light(towards, intensity=1.0):
     >>> directional_light([0, 0, 2]).direction
     array([0., 0., 1.])
     """
-    intensity = _rgb(intensity, "intensity")
+    intensity = as_rgb(intensity, "intensity", maximum=None)
     if intensity.shape != (3,):
         raise ValueError(f"intensity must be one number or one RGB triple, got shape "
                          f"{intensity.shape}")

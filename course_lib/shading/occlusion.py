@@ -5,7 +5,8 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import visibility
-from .._validate import as_array, as_points, as_scalar, as_vector, broadcast_stacks
+from .._validate import (as_array, as_points, as_positive, as_rng, as_scalar, as_vector,
+    as_whole, broadcast_stacks)
 from ._common import _dot, _unit
 
 __all__ = ["AmbientOcclusion", "HeightField", "ambient_occlusion",
@@ -15,10 +16,6 @@ __all__ = ["AmbientOcclusion", "HeightField", "ambient_occlusion",
 # ---------------------------------------------------------------------------------------------
 # Ambient occlusion
 # ---------------------------------------------------------------------------------------------
-
-def _rng(seed):
-    return seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)
-
 
 def _tangent_frame(n):
     """Two unit tangents b1, b2 with (b1, b2, n) right-handed and orthonormal, for unit n.
@@ -68,23 +65,14 @@ def cosine_sample_hemisphere(normals, samples, seed=None):
     ((200000, 3), True, True)
     """
     n = _unit(normals, "normals")
-    k = _count(samples, "samples")
-    xi = _rng(seed).random(n.shape[:-1] + (k, 2))
+    k = as_whole(samples, "samples", 1)
+    xi = as_rng(seed).random(n.shape[:-1] + (k, 2))
     r = np.sqrt(xi[..., 0])
     phi = 2 * np.pi * xi[..., 1]
     z = np.sqrt(np.maximum(0.0, 1.0 - xi[..., 0]))
     b1, b2 = _tangent_frame(n)
     return ((r * np.cos(phi))[..., None] * b1[..., None, :]
             + (r * np.sin(phi))[..., None] * b2[..., None, :] + z[..., None] * n[..., None, :])
-
-
-def _count(value, name):
-    if isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be a whole number, got a bool")
-    k = as_scalar(value, name)
-    if k < 1 or k != int(k):
-        raise ValueError(f"{name} must be a whole number >= 1, got {value!r}")
-    return int(k)
 
 
 class HeightField(NamedTuple):
@@ -283,7 +271,7 @@ def ambient_occlusion(points, normals, scene=None, samples=64, max_distance=np.i
     lead = broadcast_stacks(points=(p, 1), normals=(n, 1))
     p = np.broadcast_to(p, lead + (3,)).reshape(-1, 3)
     n = np.broadcast_to(n, lead + (3,)).reshape(-1, 3)
-    k = _count(samples, "samples")
+    k = as_whole(samples, "samples", 1)
     t_max = np.inf if np.isscalar(max_distance) and np.isposinf(max_distance) \
         else as_scalar(max_distance, "max_distance")
     if t_max <= 0:
@@ -323,9 +311,7 @@ def ambient_occlusion(points, normals, scene=None, samples=64, max_distance=np.i
         hmin = height_field._grid()
         cell = min((hmin[2] - hmin[1]) / (hmin[0].shape[1] - 1),
                    (hmin[4] - hmin[3]) / (hmin[0].shape[0] - 1))
-        s = 0.5 * cell if step is None else as_scalar(step, "step")
-        if s <= 0:
-            raise ValueError(f"step must be positive, got {s}")
+        s = 0.5 * cell if step is None else as_positive(step, "step")
         rest = ~blocked
         if rest.any():
             blocked[rest] = _march(height_field, origins[rest], d[rest], t_max, s)

@@ -38,12 +38,6 @@ def _uv(u, v):
                          f"{v.shape}") from None
 
 
-def _wrap_mode(wrap):
-    if wrap not in WRAP_MODES:
-        raise ValueError(f"wrap must be one of {', '.join(map(repr, WRAP_MODES))}, got {wrap!r}")
-    return wrap
-
-
 def _wrap(index, n, wrap):
     """Integer texel indices wrapped into [0, n) by the wrap mode."""
     if wrap == "repeat":
@@ -52,7 +46,3 @@ def _wrap(index, n, wrap):
         return np.clip(index, 0, n - 1)
     m = np.mod(index, 2 * n)
     return np.where(m < n, m, 2 * n - 1 - m)
-
-
-def _rng(seed):
-    return seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)

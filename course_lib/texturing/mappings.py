@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from .._validate import as_array, as_points, as_scalar, as_vector
+from .._validate import as_array, as_points, as_positive, as_vector
 from ._common import _dot, _uv
 from .triangle_interpolation import _weights
 
@@ -215,9 +215,7 @@ def inverse_spherical_map(u, v, center=(0.0, 0.0, 0.0), radius=1.0, axis=(0.0, 1
     """
     u, v = _uv(u, v)
     c = as_vector(center, "center", 3)
-    r = as_scalar(radius, "radius")
-    if r <= 0:
-        raise ValueError(f"radius must be positive, got {r}")
+    r = as_positive(radius, "radius")
     a, e1, e2 = _frame(axis, reference, "axis", "reference")
     theta, phi = 2 * np.pi * (u - 0.5), np.pi * (v - 0.5)
     d = (np.cos(phi) * np.cos(theta))[..., None] * e1 + (np.cos(phi) * np.sin(theta))[
@@ -266,9 +264,7 @@ def cylindrical_map(points, center=(0.0, 0.0, 0.0), axis=(0.0, 1.0, 0.0), height
     """
     p = as_points(points, "points", dims=3)
     c = as_vector(center, "center", 3)
-    h = as_scalar(height, "height")
-    if h <= 0:
-        raise ValueError(f"height must be positive, got {h}")
+    h = as_positive(height, "height")
     a, e1, e2 = _frame(axis, reference, "axis", "reference")
     d = p - c
     return _azimuth_u(d, e1, e2), d @ a / h
@@ -300,9 +296,7 @@ def inverse_cylindrical_map(u, v, center=(0.0, 0.0, 0.0), radius=1.0, axis=(0.0,
     """
     u, v = _uv(u, v)
     c = as_vector(center, "center", 3)
-    r, h = as_scalar(radius, "radius"), as_scalar(height, "height")
-    if r <= 0 or h <= 0:
-        raise ValueError(f"radius and height must be positive, got {r} and {h}")
+    r, h = as_positive(radius, "radius"), as_positive(height, "height")
     a, e1, e2 = _frame(axis, reference, "axis", "reference")
     theta = 2 * np.pi * (u - 0.5)
     return (c + r * (np.cos(theta)[..., None] * e1 + np.sin(theta)[..., None] * e2)

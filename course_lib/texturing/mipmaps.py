@@ -4,10 +4,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._validate import as_array
-from ._common import _texture, _uv, _wrap_mode
+from .._validate import as_array, as_choice, as_whole
+from ._common import WRAP_MODES, _texture, _uv
 from .procedural import checkerboard
-from .sampling import bilinear_sample, nearest_sample, _positive_int, uv_grid
+from .sampling import bilinear_sample, nearest_sample, uv_grid
 
 __all__ = ["AliasingDemo", "aliasing_demo", "mip_level", "mipmap", "texel_footprint",
     "trilinear_sample"]
@@ -138,7 +138,7 @@ def mip_level(footprint, levels=None):
         raise ValueError("footprint must be positive (texels per pixel)")
     lam = np.maximum(np.log2(rho), 0.0)
     if levels is not None:
-        lam = np.minimum(lam, _positive_int(levels, "levels") - 1)
+        lam = np.minimum(lam, as_whole(levels, "levels", 1) - 1)
     return lam
 
 
@@ -190,7 +190,7 @@ def trilinear_sample(pyramid, u, v, level, wrap="repeat"):
     if np.any(lam < 0):
         raise ValueError("level must be non-negative")
     u, v, lam = np.broadcast_arrays(u, v, lam)
-    wrap = _wrap_mode(wrap)
+    wrap = as_choice(wrap, "wrap", WRAP_MODES)
     lam = np.minimum(lam, len(levels) - 1)
     low = np.floor(lam).astype(np.intp)
     frac = lam - low
@@ -280,10 +280,10 @@ def aliasing_demo(width=160, height=120, texture_size=64, squares=8, supersample
     >>> err(d.nearest) > 3 * err(d.trilinear)
     True
     """
-    w, h = _positive_int(width, "width"), _positive_int(height, "height")
-    size = _positive_int(texture_size, "texture_size")
-    n_sq = _positive_int(squares, "squares")
-    ss = _positive_int(supersample, "supersample")
+    w, h = as_whole(width, "width", 1), as_whole(height, "height", 1)
+    size = as_whole(texture_size, "texture_size", 1)
+    n_sq = as_whole(squares, "squares", 1)
+    ss = as_whole(supersample, "supersample", 1)
     texture = checkerboard(uv_grid(size, size), n_sq)
     pyramid = mipmap(texture)
     focal, horizon = float(h), h + 1.0

@@ -2,9 +2,8 @@
 
 import numpy as np
 
-from .._validate import as_points, as_scalar, as_vector
-from ._common import _dot, _rng
-from .sampling import _positive_int
+from .._validate import as_choice, as_points, as_positive, as_rng, as_scalar, as_vector, as_whole
+from ._common import _dot
 
 __all__ = ["checkerboard", "marble", "perlin_noise", "stripes", "turbulence", "value_noise",
     "wood"]
@@ -47,9 +46,7 @@ def checkerboard(points, squares=8):
            [1., 1., 0., 0.]])
     """
     p = _coords(points)
-    s = as_scalar(squares, "squares")
-    if s <= 0:
-        raise ValueError(f"squares must be positive, got {s}")
+    s = as_positive(squares, "squares")
     return np.mod(np.floor(s * p).sum(axis=-1), 2.0)
 
 
@@ -79,10 +76,10 @@ def stripes(points, count=8, width=0.5, direction=None):
     array([1., 0., 1.])
     """
     p = _coords(points)
-    n = as_scalar(count, "count")
+    n = as_positive(count, "count")
     w = as_scalar(width, "width")
-    if n <= 0 or not 0 <= w <= 1:
-        raise ValueError(f"count must be positive and width in [0, 1], got {n} and {w}")
+    if not 0 <= w <= 1:
+        raise ValueError(f"width must lie in [0, 1] (the stripes' share of a period), got {w:g}")
     if direction is None:
         s = p[..., 0]
     else:
@@ -101,7 +98,7 @@ class _Lattice:
     """The seeded random tables of a lattice noise: a permutation, values and gradients."""
 
     def __init__(self, seed, dim):
-        rng = _rng(seed)
+        rng = as_rng(seed)
         self.perm = np.concatenate([rng.permutation(_PERIOD)] * 2)
         self.values = rng.uniform(-1.0, 1.0, _PERIOD)
         if dim == 2:
@@ -240,14 +237,11 @@ def turbulence(points, octaves=4, seed=0, lacunarity=2.0, gain=0.5, noise="perli
     ((32, 32), True)
     """
     p = _coords(points)
-    o = _positive_int(octaves, "octaves")
-    lac, g = as_scalar(lacunarity, "lacunarity"), as_scalar(gain, "gain")
-    if lac <= 0 or g <= 0:
-        raise ValueError(f"lacunarity and gain must be positive, got {lac} and {g}")
-    if noise not in ("perlin", "value"):
-        raise ValueError(f"noise must be 'perlin' or 'value', got {noise!r}")
+    o = as_whole(octaves, "octaves", 1)
+    lac, g = as_positive(lacunarity, "lacunarity"), as_positive(gain, "gain")
+    as_choice(noise, "noise", ("perlin", "value"))
     # one lattice for every octave: the same as perlin_noise(points, seed) for an integer seed
-    lattice_seed = seed if isinstance(seed, (int, np.integer)) else _rng(seed).integers(2**63)
+    lattice_seed = seed if isinstance(seed, (int, np.integer)) else as_rng(seed).integers(2**63)
     total = np.zeros(p.shape[:-1])
     for k in range(o):
         total = total + g**k * np.abs(_lattice_noise(p * lac**k, lattice_seed,

@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from .._validate import as_scalar
-from ._common import _texture, _uv, _wrap, _wrap_mode
+from .._validate import as_choice, as_whole
+from ._common import WRAP_MODES, _texture, _uv, _wrap
 
 __all__ = ["bilinear_sample", "nearest_sample", "uv_grid"]
 
@@ -47,7 +47,7 @@ def nearest_sample(texture, u, v, wrap="repeat"):
     """
     t = _texture(texture)
     u, v = _uv(u, v)
-    wrap = _wrap_mode(wrap)
+    wrap = as_choice(wrap, "wrap", WRAP_MODES)
     h, w = t.shape[:2]
     j = _wrap(np.floor(u * w).astype(np.int64), w, wrap)
     i = _wrap(np.floor(v * h).astype(np.int64), h, wrap)
@@ -96,7 +96,7 @@ def bilinear_sample(texture, u, v, wrap="repeat"):
     """
     t = _texture(texture)
     u, v = _uv(u, v)
-    wrap = _wrap_mode(wrap)
+    wrap = as_choice(wrap, "wrap", WRAP_MODES)
     h, w = t.shape[:2]
     x = u * w - 0.5
     y = v * h - 0.5
@@ -136,17 +136,8 @@ def uv_grid(width, height):
     array([[[0.25, 0.5 ],
             [0.75, 0.5 ]]])
     """
-    w, h = _positive_int(width, "width"), _positive_int(height, "height")
+    w, h = as_whole(width, "width", 1), as_whole(height, "height", 1)
     u = (np.arange(w) + 0.5) / w
     v = (np.arange(h) + 0.5) / h
     uu, vv = np.meshgrid(u, v)
     return np.stack([uu, vv], axis=-1)
-
-
-def _positive_int(value, name):
-    if isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be a whole number, got a bool")
-    x = as_scalar(value, name)
-    if x < 1 or x != int(x):
-        raise ValueError(f"{name} must be a positive whole number, got {value!r}")
-    return int(x)

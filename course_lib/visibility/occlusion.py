@@ -2,8 +2,7 @@
 
 import numpy as np
 
-from .._validate import as_array, as_vector
-from ._common import _pixels
+from .._validate import as_array, as_vector, as_whole
 from .painter import _plane_of
 
 __all__ = ["occluder_solid_angle", "occlusion_cull", "rank_occluders", "shadow_frustum"]
@@ -328,5 +327,5 @@ def rank_occluders(eye, occluders, k=None):
     omega = occluder_solid_angle(eye, occluders)
     order = np.argsort(-omega, kind="stable")
     if k is not None:
-        order = order[:_pixels(k, "k")]
+        order = order[:as_whole(k, "k", 1)]
     return order

@@ -7,8 +7,9 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import transforms, viewing
-from .._validate import as_matrix, as_points, as_scalar, as_vector
-from ._common import _camera, _mesh, _pixels, _triangles
+from .._validate import (as_choice, as_matrix, as_mesh, as_points, as_rng, as_scalar, as_vector,
+    as_whole)
+from ._common import _camera, _triangles
 from .z_buffer import _ordered_pair, _raster, _screen_triangles
 
 __all__ = ["BSPNode", "BSPTree", "Painted", "TriangleScene", "build_bsp", "bsp_back_to_front",
@@ -198,8 +199,7 @@ def build_bsp(triangles, choose="first", eps=None):
     (3, 1)
     """
     tris = _triangles(triangles, "triangles")
-    if choose not in ("first", "fewest_splits"):
-        raise ValueError(f"choose must be 'first' or 'fewest_splits', got {choose!r}")
+    as_choice(choose, "choose", ("first", "fewest_splits"))
     scale = max(float(np.abs(tris).max()), 1e-300)
     eps = 1e-9 * scale if eps is None else as_scalar(eps, "eps")
     planes = [_plane_of(t) for t in tris]
@@ -359,8 +359,7 @@ def depth_sort(triangles, view, key="farthest"):
     """
     tris = _triangles(triangles, "triangles")
     view = as_matrix(view, "view", 4)
-    if key not in ("farthest", "centroid"):
-        raise ValueError(f"key must be 'farthest' or 'centroid', got {key!r}")
+    as_choice(key, "key", ("farthest", "centroid"))
     dist = -transforms.apply(view, tris.reshape(-1, 3))[:, 2].reshape(-1, 3)
     k = dist.max(axis=1) if key == "farthest" else dist.mean(axis=1)
     return np.argsort(-k, kind="stable")
@@ -432,7 +431,7 @@ def painter_image(polygons, ids, view, projection, width, height):
            [0, 0, 0, 0]])
     """
     view, projection = _camera(view, projection)
-    width, height = _pixels(width, "width"), _pixels(height, "height")
+    width, height = as_whole(width, "width", 1), as_whole(height, "height", 1)
     labels = np.asarray(ids) if len(polygons) else np.zeros(0, dtype=np.intp)
     if labels.ndim != 1 or len(labels) != len(polygons) or not np.issubdtype(labels.dtype,
                                                                               np.integer):
@@ -509,7 +508,7 @@ def render_painter(vertices, faces, view, projection, width, height, order="bsp"
     >>> int((bsp.ids != zb.ids).sum()) < 5, int((naive.ids != zb.ids).sum()) > 20
     (True, True)
     """
-    v, f = _mesh(vertices, faces)
+    v, f = as_mesh(vertices, faces)
     view, projection = _camera(view, projection)
     tris = v[f]
     if order == "bsp":
@@ -648,9 +647,9 @@ def random_scene(n_triangles, seed=None, size=0.8):
     >>> float((zb.ids == rc.ids).mean()) > 0.97
     True
     """
-    n = _pixels(n_triangles, "n_triangles")
+    n = as_whole(n_triangles, "n_triangles", 1)
     size = as_scalar(size, "size")
-    rng = np.random.default_rng(seed)
+    rng = as_rng(seed)
     centres = rng.uniform(-1, 1, (n, 1, 3))
     verts = (centres + rng.uniform(-size, size, (n, 3, 3))).reshape(-1, 3)
     return TriangleScene(verts, np.arange(3 * n).reshape(n, 3), *_default_camera())

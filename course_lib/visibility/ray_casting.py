@@ -7,8 +7,8 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import transforms
-from .._validate import as_points, as_scalar
-from ._common import _camera, _mesh, _pixels, _triangles
+from .._validate import as_mesh, as_points, as_scalar, as_whole
+from ._common import _camera, _triangles
 
 __all__ = ["BVH", "Hits", "RayCastImage", "ray_cast", "ray_cast_image", "ray_triangle"]
 
@@ -236,7 +236,7 @@ class BVH:
 
     def __init__(self, triangles, leaf_size=4):
         tris = _triangles(triangles, "triangles")
-        leaf_size = _pixels(leaf_size, "leaf_size")
+        leaf_size = as_whole(leaf_size, "leaf_size", 1)
         self.triangles = tris
         self._v0 = np.ascontiguousarray(tris[:, 0])
         self._e1 = tris[:, 1] - tris[:, 0]
@@ -488,9 +488,9 @@ def ray_cast_image(vertices, faces, view, projection, width, height, accelerate=
     >>> bool(np.all(rc.ids == zb.ids)), bool(np.allclose(rc.depth[2:6, 2:6], zb.depth[2:6, 2:6]))
     (True, True)
     """
-    v, f = _mesh(vertices, faces)
+    v, f = as_mesh(vertices, faces)
     view, projection = _camera(view, projection)
-    width, height = _pixels(width, "width"), _pixels(height, "height")
+    width, height = as_whole(width, "width", 1), as_whole(height, "height", 1)
     pv = projection @ view
     if abs(np.linalg.det(pv)) < 1e-300:
         raise ValueError("projection @ view is singular: the camera cannot be inverted into rays")

@@ -6,8 +6,8 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import transforms, viewing
-from .._validate import as_array, as_points
-from ._common import _camera, _mesh, _pixels, _triangles
+from .._validate import as_array, as_mesh, as_points, as_whole
+from ._common import _camera, _triangles
 
 __all__ = ["ZBuffer", "ZBufferStep", "render_depth", "triangle_coverage", "zbuffer",
     "zbuffer_steps"]
@@ -176,7 +176,7 @@ def triangle_coverage(triangle, width, height):
     if tri.shape[0] != 3 or tri.ndim != 2:
         raise ValueError(f"triangle must be 3 points, shape (3, 2) or (3, 3), got shape "
                          f"{tri.shape}")
-    return _raster(tri, _pixels(width, "width"), _pixels(height, "height"))
+    return _raster(tri, as_whole(width, "width", 1), as_whole(height, "height", 1))
 
 
 def _check_values(values, m, name="values"):
@@ -218,7 +218,7 @@ def _zbuffer_run(tris, width, height, vals=None, w=None, background=0.0):
 
 def _zbuffer_inputs(triangles, width, height, values, w):
     tris = _triangles(triangles, "triangles")
-    width, height = _pixels(width, "width"), _pixels(height, "height")
+    width, height = as_whole(width, "width", 1), as_whole(height, "height", 1)
     vals, scalar = _check_values(values, len(tris))
     if w is not None:
         w = as_array(w, "w")
@@ -451,9 +451,9 @@ def render_depth(vertices, faces, view, projection, width, height, values=None,
     >>> np.unique(zb.ids).tolist(), round(float(zb.depth[4, 4]), 6)    # depth of z_e = -3
     ([-1, 0, 1], 0.740741)
     """
-    v, f = _mesh(vertices, faces)
+    v, f = as_mesh(vertices, faces)
     view, projection = _camera(view, projection)
-    width, height = _pixels(width, "width"), _pixels(height, "height")
+    width, height = as_whole(width, "width", 1), as_whole(height, "height", 1)
     attrs, scalar = None, False
     if values is not None:
         vals = as_array(values, "values")

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import draw, format as fmt, shapes, transforms
+from .._validate import as_choice
 from ._base import Explorer
 
 __all__ = ["ComposerExplorer", "OPERATIONS", "Operation", "State", "scene"]
@@ -66,8 +67,7 @@ class Operation:
     params: tuple = None
 
     def __post_init__(self):
-        if self.kind not in OPERATIONS:
-            raise ValueError(f"kind must be one of {list(OPERATIONS)}, got {self.kind!r}")
+        as_choice(self.kind, "kind", list(OPERATIONS))
         defaults = OPERATIONS[self.kind][2]
         self.params = tuple(defaults if self.params is None else self.params)
         if len(self.params) != len(defaults):

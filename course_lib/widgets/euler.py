@@ -10,6 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, mesh
+from .._validate import as_choice
 from ._base import Explorer, beside, bind, figure_3d
 
 __all__ = ["MESHES", "EulerExplorer", "State", "scene"]
@@ -54,8 +55,7 @@ def scene(state):
     >>> s["V"], s["E"], s["F"], s["chi"], s["genus"]
     (32, 96, 64, 0, 1)
     """
-    if state.mesh not in MESHES:
-        raise ValueError(f"mesh must be one of {list(MESHES)}, got {state.mesh!r}")
+    as_choice(state.mesh, "mesh", list(MESHES))
     r = int(state.refinement)
     if not 0 <= r <= 3:
         raise ValueError(f"refinement must be in 0..3, got {state.refinement}")

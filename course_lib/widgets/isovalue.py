@@ -31,6 +31,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, scivis
+from .._validate import as_choice
 from ._base import Explorer, bind
 
 __all__ = ["FIELDS", "IsolineExplorer", "IsosurfaceExplorer", "State", "State3D", "VOLUMES",
@@ -498,8 +499,7 @@ def scene_3d(state):
     (0, 0, 1)
     """
     data = example_volume(state.volume)
-    if state.table not in TABLES:
-        raise ValueError(f"table must be one of {TABLES}, got {state.table!r}")
+    as_choice(state.table, "table", TABLES)
     vertices, triangles = scivis.marching_cubes(data.values, state.level, data.spacing,
                                                 data.origin, table=state.table)
     normals = np.zeros_like(vertices)

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, mesh
+from .._validate import as_choice
 from ._base import Explorer, beside, bind, figure_3d
 
 __all__ = ["MESHES", "HalfEdgeExplorer", "State", "scene"]
@@ -29,8 +30,7 @@ _CACHE = {}
 
 def _structures(name):
     """The half-edge and winged-edge structures of a named mesh (built once)."""
-    if name not in MESHES:
-        raise ValueError(f"mesh must be one of {list(MESHES)}, got {name!r}")
+    as_choice(name, "mesh", list(MESHES))
     if name not in _CACHE:
         he = mesh.HalfEdgeMesh.from_faces(*MESHES[name]())
         _CACHE[name] = (he, mesh.WingedEdgeMesh.from_half_edges(he))

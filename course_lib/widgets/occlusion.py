@@ -22,6 +22,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, shading
+from .._validate import as_choice
 from ._base import Explorer, bind, slider
 
 __all__ = ["KINDS", "MAX_SAMPLES", "OcclusionExplorer", "State", "convergence", "exact",
@@ -87,8 +88,7 @@ def occluders(kind):
     >>> [len(occluders(kind)) for kind in KINDS]
     [0, 2, 12]
     """
-    if kind not in KINDS:
-        raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
+    as_choice(kind, "kind", KINDS)
     if kind == "open floor":
         return np.zeros((0, 3, 3))
     length, h = WALL_LENGTH, WALL_HEIGHT
@@ -212,8 +212,7 @@ def scene(state):
     >>> bool(s["rms_error"] < 2 / np.sqrt(64))
     True
     """
-    if state.kind not in KINDS:
-        raise ValueError(f"kind must be one of {KINDS}, got {state.kind!r}")
+    as_choice(state.kind, "kind", KINDS)
     k = int(state.samples)
     if not 1 <= k <= MAX_SAMPLES:
         raise ValueError(f"samples must be in 1 ... {MAX_SAMPLES}, got {state.samples!r}")

@@ -24,6 +24,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, shading, viewing
+from .._validate import as_choice
 from ._base import Explorer, bind, degree_sliders, labelled, slider
 
 __all__ = ["MODELS", "PhongExplorer", "State", "interpolation_buffers", "light_direction",
@@ -63,7 +64,7 @@ class State:
     segments: int = 12
 
 
-def _rgb(hex_color):
+def _hex_to_rgb(hex_color):
     """``#rrggbb`` -> RGB floats in [0, 1]."""
     h = hex_color.lstrip("#")
     if len(h) != 6:
@@ -198,11 +199,10 @@ def scene(state):
     >>> float(s["raw"].specular.max())        # light at the viewer: R = V at the centre
     1.0
     """
-    if state.model not in MODELS:
-        raise ValueError(f"model must be one of {MODELS}, got {state.model!r}")
+    as_choice(state.model, "model", MODELS)
     normals, mask = sphere_normals(SIZE)
-    colour = _rgb(state.color)
-    light_rgb = _rgb(state.light_color)
+    colour = _hex_to_rgb(state.color)
+    light_rgb = _hex_to_rgb(state.light_color)
     direction = light_direction(state.light_azimuth, state.light_elevation)
     light = shading.directional_light(direction, intensity=light_rgb)
     material = shading.colored_material(colour, state.ka, state.kd, state.ks, state.shininess,

@@ -16,6 +16,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, raytracing as rt
+from .._validate import as_choice
 from ._base import Explorer, read_controls
 
 __all__ = ["KINDS", "RAY_COLORS", "RayTreeExplorer", "State", "clip_segment", "example",
@@ -58,8 +59,7 @@ def example(kind):
     >>> example("glass").camera.width
     160
     """
-    if kind not in KINDS:
-        raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
+    as_choice(kind, "kind", KINDS)
     return rt.example_scene(kind, *IMAGE)
 
 
@@ -109,8 +109,7 @@ def scene(state):
     >>> s["counts"]["primary"], s["segments"]["primary"].shape
     (1, (1, 2, 3))
     """
-    if state.kind not in KINDS:
-        raise ValueError(f"kind must be one of {KINDS}, got {state.kind!r}")
+    as_choice(state.kind, "kind", KINDS)
     scn = example(state.kind)
     origin, direction = scn.camera.pixel_ray(state.row, state.column)
     tree = rt.trace_tree(scn, origin, direction, max_depth=state.max_depth,

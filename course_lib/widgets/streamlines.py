@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import draw, scivis
+from .._validate import as_choice
 from ._base import Explorer, bind
 from ._drag import DraggablePoints
 
@@ -43,8 +44,7 @@ def field_matrix(kind):
     array([[ 0., -1.],
            [ 1.,  0.]])
     """
-    if kind not in FIELDS:
-        raise ValueError(f"kind must be one of {FIELDS}, got {kind!r}")
+    as_choice(kind, "kind", FIELDS)
     v = scivis.example_vector_field(kind)
     return v(np.eye(2)).T                    # columns: the images of the basis vectors
 
@@ -185,8 +185,7 @@ def scene(state):
     >>> float(s["errors"][0]).__round__(4)                 # |(1, 0.5) - (cos .5, sin .5)|
     0.1241
     """
-    if state.method not in METHODS:
-        raise ValueError(f"method must be one of {METHODS}, got {state.method!r}")
+    as_choice(state.method, "method", METHODS)
     seeds = np.asarray(state.seeds, dtype=float).reshape(-1, 2)
     n = max(1, int(round(state.duration / state.step)))
     h = state.duration / n                      # the step, adjusted so that n steps reach T

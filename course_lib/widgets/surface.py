@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import curves, draw, surfaces
+from .._validate import as_choice
 from ._base import Explorer, bind
 
 __all__ = ["KINDS", "State", "SurfaceExplorer", "control_grid", "scene"]
@@ -75,8 +76,7 @@ def scene(state):
     >>> bool(bez["changed"][inner].all()), bool(bsp["changed"][inner].all())   # global vs local
     (True, False)
     """
-    if state.kind not in KINDS:
-        raise ValueError(f"kind must be one of {KINDS}, got {state.kind!r}")
+    as_choice(state.kind, "kind", KINDS)
     base = control_grid()
     grid = base.copy()
     grid[state.i, state.j, 2] += state.lift

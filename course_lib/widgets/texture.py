@@ -29,6 +29,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import draw, texturing
+from .._validate import as_choice
 from ._base import Explorer, labelled, read_controls, slider
 
 __all__ = ["MAPPINGS", "SIZES", "State", "TEXTURES", "TextureExplorer", "compendium_map",
@@ -112,8 +113,7 @@ def texture_image(kind, frequency, strength, size):
            [1., 1., 0., 0.],
            [1., 1., 0., 0.]])
     """
-    if kind not in TEXTURES:
-        raise ValueError(f"kind must be one of {TEXTURES}, got {kind!r}")
+    as_choice(kind, "kind", TEXTURES)
     uv = texturing.uv_grid(size, size)
     if kind == "checkerboard":
         grey = texturing.checkerboard(uv, frequency)
@@ -335,8 +335,7 @@ def scene(state, with_filtering=True):
                                  (state.mapping, MAPPINGS, "mapping"),
                                  (state.sampling, SAMPLINGS, "sampling"),
                                  (state.size, SIZES, "size")):
-        if value not in options:
-            raise ValueError(f"{name} must be one of {options}, got {value!r}")
+        as_choice(value, name, options)
     grey = texture_image(state.texture, float(state.frequency), float(state.strength),
                          int(state.size))
     rgb = _colour(grey, state.texture)

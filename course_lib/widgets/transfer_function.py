@@ -29,6 +29,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import colormaps, draw, scivis
+from .._validate import as_choice
 from ._base import Explorer, bind
 from ._drag import DraggablePoints
 
@@ -68,8 +69,7 @@ def preset_points(name):
     >>> points.tolist(), opacities.tolist()
     ([0.0, 0.55, 0.75, 0.9, 1.0], [0.0, 0.0, 0.8, 0.8, 1.0])
     """
-    if name not in PRESETS:
-        raise ValueError(f"name must be one of {PRESETS}, got {name!r}")
+    as_choice(name, "name", PRESETS)
     tf = colormaps.transfer_preset(name)
     return tf.points.copy(), tf.values[:, :3].copy(), tf.values[:, 3].copy()
 
