@@ -5,6 +5,8 @@ mirroring or shear of it can be told apart from every other at a glance.
 """
 import numpy as np
 
+from ._validate import as_positive, as_whole
+
 __all__ = ["letter_f", "letter_f_3d", "torus", "unit_square"]
 
 _F_OUTLINE = np.array([
@@ -105,9 +107,16 @@ def torus(major=1.0, minor=0.4, segments=24, rings=12):
     >>> v, f = torus(segments=8, rings=4)
     >>> v.shape, f.shape
     ((32, 3), (64, 3))
+
+    Closed, of genus 1 (:mod:`course_lib.mesh` counts it):
+
+    >>> from course_lib.mesh import HalfEdgeMesh
+    >>> HalfEdgeMesh.from_faces(*torus()).genus()
+    1
     """
-    if segments < 3 or rings < 3:
-        raise ValueError(f"segments and rings must be at least 3, got {segments} and {rings}")
+    major, minor = as_positive(major, "major"), as_positive(minor, "minor")
+    segments = as_whole(segments, "segments", 3, integer_type=True, at_least=True)
+    rings = as_whole(rings, "rings", 3, integer_type=True, at_least=True)
     u = np.linspace(0, 2 * np.pi, segments, endpoint=False)[:, None]
     v = np.linspace(0, 2 * np.pi, rings, endpoint=False)[None, :]
     radius = major + minor * np.cos(v)

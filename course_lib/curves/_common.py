@@ -96,7 +96,7 @@ def _knot_vector(value, degree, n_control=None, name="knots"):
     return u, n_control
 
 
-def _weights(value, n_control, name="weights"):
+def _control_weights(value, n_control, name="weights"):
     """Positive weights, one per control point."""
     w = as_array(value, name)
     if w.ndim != 1 or len(w) != n_control:

@@ -3,7 +3,7 @@
 import numpy as np
 
 from .._validate import as_array, as_positive, as_vector
-from ._common import _control_points, _knot_vector, NurbsCurve, _parameters, _weights
+from ._common import _control_points, _control_weights, _knot_vector, NurbsCurve, _parameters
 from .bezier_curves import _bernstein_matrix
 from .bspline_curves import _de_boor
 
@@ -59,7 +59,7 @@ def rational_bezier(control_points, weights, t):
     (array([0.70710678, 0.70710678]), 1.0)
     """
     p = _control_points(control_points)
-    w = _weights(weights, len(p))
+    w = _control_weights(weights, len(p))
     t = _parameters(t, 0.0, 1.0)
     h = _bernstein_matrix(len(p) - 1, t) @ _homogeneous(p, w)
     return h[..., :-1] / h[..., -1:]
@@ -103,7 +103,7 @@ def nurbs(control_points, weights, knots, degree, t):
            [ 1.,  0.]])
     """
     p_ctrl = _control_points(control_points)
-    w = _weights(weights, len(p_ctrl))
+    w = _control_weights(weights, len(p_ctrl))
     u, n = _knot_vector(knots, degree, len(p_ctrl))
     p = int(degree)
     t = _parameters(t, u[p], u[n])

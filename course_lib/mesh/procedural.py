@@ -7,6 +7,7 @@ a boundary (disc), and two that are not manifold (bow tie, three faces on an edg
 import numpy as np
 
 from .. import shapes
+from ..shapes import torus   # one torus: the course's test shape, re-exported with the meshes
 from .._validate import as_positive, as_whole
 from ._common import _compact
 
@@ -117,20 +118,6 @@ def icosphere(subdivisions=0, radius=1.0):
     for _ in range(s):
         v, f = _midpoint_subdivide(v, f)
     return r * v / np.linalg.norm(v, axis=1, keepdims=True), f
-
-
-def torus(major=1.0, minor=0.4, segments=24, rings=12):
-    """A closed torus (genus 1) around the z axis: see :func:`course_lib.shapes.torus`.
-
-    Examples
-    --------
-    >>> from course_lib.mesh import HalfEdgeMesh
-    >>> HalfEdgeMesh.from_faces(*torus()).genus()
-    1
-    """
-    return shapes.torus(as_positive(major, "major"), as_positive(minor, "minor"),
-                        as_whole(segments, "segments", 3, integer_type=True, at_least=True),
-                        as_whole(rings, "rings", 3, integer_type=True, at_least=True))
 
 
 def double_torus(major=1.0, minor=0.4, segments=24, rings=12, gap=None):

@@ -4,7 +4,7 @@ import numpy as np
 
 from .._validate import as_array, as_points, as_positive, as_vector
 from ._common import _dot, _uv
-from .triangle_interpolation import _weights
+from .triangle_interpolation import _per_vertex
 
 __all__ = ["cylindrical_map", "inverse_cylindrical_map", "inverse_planar_map",
     "inverse_spherical_map", "planar_map", "seam_unwrap", "spherical_map"]
@@ -325,6 +325,6 @@ def seam_unwrap(u):
     array([[0.97, 1.02, 0.99],
            [0.2 , 0.3 , 0.25]])
     """
-    uu = _weights(u, "u")
+    uu = _per_vertex(u, "u")
     crosses = (uu.max(axis=-1) - uu.min(axis=-1)) > 0.5
     return np.where(crosses[..., None] & (uu < 0.5), uu + 1.0, uu)

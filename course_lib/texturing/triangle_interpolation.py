@@ -93,7 +93,8 @@ def barycentric(p, a, b, c):
     return np.stack(np.broadcast_arrays(*weights), axis=-1) / np.asarray(total)[..., None]
 
 
-def _weights(weights, name="weights"):
+def _per_vertex(weights, name="weights"):
+    """Three values per point, one for each vertex of the triangle (last axis 3)."""
     w = as_array(weights, name)
     if w.ndim == 0 or w.shape[-1] != 3:
         raise ValueError(f"{name} must hold three barycentric weights in the last axis (shape "
@@ -141,7 +142,7 @@ def barycentric_interpolate(values, weights, stacked=False):
     >>> barycentric_interpolate([[0, 1, 2], [3, 4, 5]], [[1, 0, 0], [0, 0, 1]], stacked=True)
     array([0., 5.])
     """
-    w = _weights(weights)
+    w = _per_vertex(weights)
     q = as_array(values, "values")
     if not stacked:
         if q.ndim not in (1, 2) or q.shape[0] != 3:
@@ -200,8 +201,8 @@ def perspective_weights(weights, w):
     >>> perspective_weights([0.5, 0.5, 0.0], [1.0, 3.0, 1.0])
     array([0.75, 0.25, 0.  ])
     """
-    lam = _weights(weights)
-    ww = _weights(w, "w")
+    lam = _per_vertex(weights)
+    ww = _per_vertex(w, "w")
     if np.any(ww <= 0):
         raise ValueError("w must be positive (the vertices must be in front of the eye)")
     broadcast_stacks(weights=(lam, 1), w=(ww, 1))
