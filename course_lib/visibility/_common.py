@@ -2,7 +2,8 @@
 
 import numpy as np
 
-from .._validate import as_array, as_matrix, as_points, as_scalar
+from .._raycore import as_triangles as _triangles  # noqa: F401 (painter, z_buffer)
+from .._validate import as_matrix, as_points, as_scalar
 
 
 # ---------------------------------------------------------------------------------------------
@@ -16,18 +17,6 @@ def _pixels(value, name):
     if v <= 0 or v != int(v):
         raise ValueError(f"{name} must be a positive whole number of pixels, got {value!r}")
     return int(v)
-
-
-def _triangles(value, name, dim=3):
-    t = as_array(value, name)
-    if t.shape == (3, dim):
-        t = t[None]
-    if t.ndim != 3 or t.shape[1:] != (3, dim):
-        raise ValueError(f"{name} must be an array of triangles of shape (m, 3, {dim}) "
-                         f"(m triangles, 3 vertices, {dim} coordinates), got shape {t.shape}")
-    if len(t) == 0:
-        raise ValueError(f"{name} must contain at least one triangle, got an empty array")
-    return t
 
 
 def _faces(faces, n_vertices):
