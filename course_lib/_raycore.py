@@ -270,7 +270,8 @@ def slab(lo, hi, o, d):
 
     Examples
     --------
-    >>> near, far = slab(np.zeros(3), np.ones(3), np.array([[0.5, 0.5, 5]]), np.array([[0, 0, -1.0]]))
+    >>> o, d = np.array([[0.5, 0.5, 5.0]]), np.array([[0.0, 0.0, -1.0]])
+    >>> near, far = slab(np.zeros(3), np.ones(3), o, d)
     >>> float(near.max()), float(far.min())
     (4.0, 5.0)
     """
@@ -343,7 +344,8 @@ class TriangleHits(NamedTuple):
     Examples
     --------
     >>> from course_lib.raytracing import intersect_triangles
-    >>> hits = intersect_triangles([0.25, 0.25, 2], [0, 0, -1], [[[0, 0, 0], [1, 0, 0], [0, 1, 0]]])
+    >>> tri = [[[0, 0, 0], [1, 0, 0], [0, 1, 0]]]
+    >>> hits = intersect_triangles([0.25, 0.25, 2], [0, 0, -1], tri)
     >>> float(hits.t), int(hits.ids), float(hits.u), float(hits.v), hits.normals
     (2.0, 0, 0.25, 0.25, array([0., 0., 1.]))
     """
