@@ -249,10 +249,10 @@ def brute_force(o, d, soa, t_min, t_max):
         rays = np.arange(r0, min(r0 + ray_chunk, p))
         ot, dt = o[rays].T[:, :, None], d[rays].T[:, :, None]
         for s in range(0, m, tri_chunk):
-            ids = np.arange(s, min(s + tri_chunk, m))
-            t, u, v = moller_trumbore(ot, dt, soa[:, None, ids])
+            e = min(s + tri_chunk, m)
+            t, u, v = moller_trumbore(ot, dt, soa[:, None, s:e])     # a view, not a copy
             t[(t < t_min) | (t > t_max[rays, None])] = np.inf
-            keep_nearest(t, u, v, ids, rays, best)
+            keep_nearest(t, u, v, np.arange(s, e), rays, best)
     return (*best, p * m, 0)
 
 
