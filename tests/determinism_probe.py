@@ -14,12 +14,13 @@ two correctly rounded weighted sums), compared to a relative 1e-9: the last bit 
 differ between kernels (that is numpy's and OpenBLAS's business), but no order, count, tree,
 printed text or visibly different value may.
 
-Covered: both BVHs (:class:`course_lib.visibility.BVH`, :class:`course_lib.raytracing.BVH`)
-on meshes whose box centres tie, the BSP trees and painter's orders, occluder ranking and the
-PVS, the half-edge and winged-edge builds, QEM simplification records, marching squares and
-cubes, ambient occlusion, the camera, z-buffer and simplification widgets, every chapter's
-exercise generators over a range of seeds and the mock exam, and the counted outputs the
-lesson notebooks print (recomputed here with the same calls as the notebook cells).
+Covered: the BVH (:class:`course_lib.visibility.BVH` is :class:`course_lib.raytracing.BVH`;
+both traversals, ``cast`` and ``intersect``) on meshes whose box centres tie, the BSP trees and
+painter's orders, occluder ranking and the PVS, the half-edge and winged-edge builds, QEM
+simplification records, marching squares and cubes, ambient occlusion, the camera, z-buffer and
+simplification widgets, every chapter's exercise generators over a range of seeds and the mock
+exam, and the counted outputs the lesson notebooks print (recomputed here with the same calls
+as the notebook cells).
 
 Run ``python tests/determinism_probe.py`` to print the JSON (``--only PREFIX`` for a part,
 ``--runtime`` for the dispatch and BLAS kernels in use only).

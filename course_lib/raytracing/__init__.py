@@ -136,7 +136,8 @@ Files
     Chapter 15 (lesson section 15.4): reflected and refracted directions, Fresnel and Schlick.
 ``intersections.py``
     Chapter 15 (lesson sections 15.2, 15.6): ray-object intersections, the slab test and the
-    BVH.
+    BVH (triangles, brute force and :class:`BVH` itself are in :mod:`course_lib._raycore`,
+    shared with :mod:`course_lib.visibility`).
 ``camera.py``
     Chapter 15 (lesson section 15.1): the pinhole camera, one primary ray per pixel sample.
 ``scene.py``

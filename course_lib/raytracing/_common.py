@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from .._validate import as_array, as_points, as_scalar, broadcast_stacks
+from .._validate import as_array, as_points
 
 
 DEFAULT_EPSILON = 1e-4
@@ -30,34 +30,6 @@ def _nonzero_vectors(v, name, lead):
                          f"{_where(int(np.argmax(zero.ravel())), lead)}: a ray needs a direction")
 
 
-def _rays(origins, directions):
-    """Origins and directions flattened to (p, 3), and the common leading shape."""
-    o = as_points(origins, "origins", dims=3)
-    d = as_points(directions, "directions", dims=3)
-    lead = broadcast_stacks(origins=(o, 1), directions=(d, 1))
-    o = np.ascontiguousarray(np.broadcast_to(o, lead + (3,)).reshape(-1, 3))
-    d = np.ascontiguousarray(np.broadcast_to(d, lead + (3,)).reshape(-1, 3))
-    _nonzero_vectors(d, "directions", lead)
-    return o, d, lead
-
-
-def _t_min(value):
-    t = as_scalar(value, "t_min")
-    if t < 0:
-        raise ValueError(f"t_min must be >= 0 (hits behind the ray's origin are never wanted), "
-                         f"got {t}")
-    return t
-
-
-def _t_max(value, t_min):
-    if np.isscalar(value) and np.isposinf(value):
-        return np.inf
-    t = as_scalar(value, "t_max")
-    if t < t_min:
-        raise ValueError(f"t_max must not be below t_min (got t_min = {t_min}, t_max = {t})")
-    return t
-
-
 def _indices(value, name):
     """Refractive indices: positive numbers (arrays allowed)."""
     eta = as_array(value, name)
@@ -75,3 +47,5 @@ def _unit_vectors(value, name):
                          f"{_where(int(np.argmin(length.ravel())), length.shape)}: it has no "
                          "direction")
     return v / length[..., None]
+
+

@@ -6,7 +6,8 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import shading
-from ._common import _dot, _rays, _t_min
+from .._raycore import as_rays as _rays, as_t_min as _t_min
+from ._common import _dot
 from .intersections import _before, _first_root, _plane_t, _sphere_roots
 from .optics import _refract, _schlick
 from .scene import Mesh, Plane, Scene, Sphere

@@ -80,7 +80,8 @@ Files
     Chapter 5, hidden-surface elimination (lesson section 5): scan conversion and the z-buffer.
 ``ray_casting.py``
     Chapter 5, hidden-surface elimination (lesson section 5): ray casting, brute force and with
-    a BVH.
+    a BVH (the rays, Möller-Trumbore, brute force and :class:`BVH` itself are in
+    :mod:`course_lib._raycore`, shared with :mod:`course_lib.raytracing`).
 ``painter.py``
     Chapter 5, hidden-surface elimination (lesson section 5): the painter's algorithm, depth
     sort, BSP trees.

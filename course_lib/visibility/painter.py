@@ -9,7 +9,8 @@ import numpy as np
 from .. import transforms, viewing
 from .._validate import (as_choice, as_matrix, as_mesh, as_points, as_rng, as_scalar, as_vector,
     as_whole)
-from ._common import _camera, _triangles
+from .._raycore import as_triangles as _triangles
+from ._common import _camera
 from .z_buffer import _ordered_pair, _raster, _screen_triangles
 
 __all__ = ["BSPNode", "BSPTree", "Painted", "TriangleScene", "build_bsp", "bsp_back_to_front",

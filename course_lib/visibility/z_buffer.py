@@ -7,7 +7,8 @@ import numpy as np
 
 from .. import transforms, viewing
 from .._validate import as_array, as_mesh, as_points, as_whole
-from ._common import _camera, _triangles
+from .._raycore import as_triangles as _triangles
+from ._common import _camera
 
 __all__ = ["ZBuffer", "ZBufferStep", "render_depth", "triangle_coverage", "zbuffer",
     "zbuffer_steps"]
