@@ -13,6 +13,7 @@ point :math:`p` by the angle :math:`\theta` about the axis :math:`\hat n` throug
 """
 import numpy as np
 
+from ._linalg import dot as _dot
 from ._validate import (as_array, as_points, as_quaternions, as_rotation_matrix,
                         broadcast_stacks)
 
@@ -32,10 +33,6 @@ __all__ = [
     "to_axis_angle",
     "to_matrix",
 ]
-
-
-def _dot(a, b):
-    return np.einsum("...i,...i->...", a, b)
 
 
 def identity():
@@ -236,10 +233,10 @@ def normalize(q):
     >>> normalize([0, 0, 3, 4])
     array([0. , 0. , 0.6, 0.8])
     """
-    return _unit(as_quaternions(q, "q"))
+    return _unit_quaternion(as_quaternions(q, "q"))
 
 
-def _unit(q):
+def _unit_quaternion(q):
     """q / |q|, scaled first by its largest component so that squaring cannot overflow."""
     q = q / np.abs(q).max(axis=-1, keepdims=True)
     return q / np.sqrt(_dot(q, q))[..., None]
@@ -273,7 +270,7 @@ def inverse(q):
     array([1., 0., 0., 0.])
     """
     q = as_quaternions(q, "q")
-    return conjugate(_unit(q)) / norm(q)[..., None]
+    return conjugate(_unit_quaternion(q)) / norm(q)[..., None]
 
 
 def rotate(q, points):

@@ -173,3 +173,45 @@ def test_notebook_carries_the_slide_metadata_of_lecture_mode(path):
         f"{path.name}: slide metadata missing or stale; run "
         "`python -m course_lib.exercises.build --slides`")
     assert have[0] == "slide" and have.count("slide") >= 2 if len(have) > 3 else True
+
+
+# One room per concept: a reader next to the textbook finds *the* implementation of a concept.
+# A module that grows past about a thousand lines becomes a package, one topic a file (see
+# CONTRIBUTING.md, Layout), and a function or class of the library is defined in one place only.
+MAX_MODULE_LINES = 1000
+# names that two modules define on purpose, each for a different concept, always used qualified
+SAME_NAME_DIFFERENT_CONCEPT = {
+    "inverse": "quaternions.inverse (conjugate / norm^2) vs transforms.inverse (of a matrix)",
+    "rotate": "quaternions.rotate (q p q-bar) vs transforms.rotate (a rotation matrix)",
+    "normalize": "quaternions.normalize (unit quaternion) vs colormaps.normalize (data onto [0, 1])",
+}
+# an old public name kept working for students' code, warning and pointing to the new one
+DEPRECATED = {("clipping.py", "face_normals"): "the old name of face_cross_products (not unit)"}
+
+
+def _library_files():
+    return sorted(p for p in (ROOT / "course_lib").rglob("*.py") if "__pycache__" not in p.parts)
+
+
+def test_no_module_of_the_library_is_longer_than_about_a_thousand_lines():
+    long = {str(p.relative_to(ROOT)): n for p in _library_files()
+            if (n := len(p.read_text().splitlines())) > MAX_MODULE_LINES}
+    assert not long, (f"modules over {MAX_MODULE_LINES} lines: {long}; split them into a package "
+                      "along their sections (CONTRIBUTING.md, Layout)")
+
+
+def test_each_function_and_class_of_the_algorithm_layer_is_defined_once():
+    # the widgets' scene/State/Explorer and the exercises' checkers follow per-module patterns
+    places = {}
+    for path in _library_files():
+        rel = path.relative_to(ROOT / "course_lib")
+        if rel.parts[0] in ("widgets", "exercises") or rel.name == "draw.py":
+            continue
+        for node in ast.parse(path.read_text()).body:
+            if isinstance(node, (ast.FunctionDef, ast.ClassDef)) \
+                    and (str(rel), node.name) not in DEPRECATED:
+                places.setdefault(node.name, []).append(str(rel))
+    twice = {name: where for name, where in places.items()
+             if len(where) > 1 and name not in SAME_NAME_DIFFERENT_CONCEPT}
+    assert not twice, ("defined in more than one module (one implementation, imported where it is "
+                       f"needed; or, for two concepts, two names): {twice}")

@@ -157,7 +157,8 @@ from .optics import (fresnel, reflect_direction, refract_direction, schlick)
 from .intersections import (BVH, BoxHits, SurfaceHits, TriangleHits, intersect_box,
     intersect_plane, intersect_sphere, intersect_triangles)
 from .camera import (Camera, CameraRays, camera_rays)
-from .scene import (Material, Mesh, Plane, Scene, Sphere)
+from .scene import (Mesh, Plane, Scene, Sphere, WhittedMaterial)
+from .scene import WhittedMaterial as Material     # its old name, the same class
 from .hits import (SceneHits, intersect_scene)
 from .whitted import (RayCounts, RayNode, render, trace_tree)
 from .examples import (example_scene)
@@ -167,7 +168,6 @@ __all__ = [
     "BoxHits",
     "Camera",
     "CameraRays",
-    "Material",
     "Mesh",
     "Plane",
     "RayCounts",
@@ -177,6 +177,7 @@ __all__ = [
     "Sphere",
     "SurfaceHits",
     "TriangleHits",
+    "WhittedMaterial",
     "camera_rays",
     "example_scene",
     "fresnel",

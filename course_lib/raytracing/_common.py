@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from .._linalg import dot as _dot  # noqa: F401 (the package's files use it)
 from .._validate import as_array, as_points
 
 
@@ -11,10 +12,6 @@ DEFAULT_EPSILON = 1e-4
 # ---------------------------------------------------------------------------------------------
 # Input checks built on the shared helpers
 # ---------------------------------------------------------------------------------------------
-
-def _dot(a, b):
-    return np.einsum("...i,...i->...", a, b)
-
 
 def _where(index, lead):
     """' (at index ...)' for a flat index into arrays of leading shape `lead`."""

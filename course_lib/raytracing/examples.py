@@ -4,7 +4,7 @@ import numpy as np
 
 from .. import shading
 from .camera import Camera
-from .scene import Material, Mesh, Plane, Scene, Sphere
+from .scene import Mesh, Plane, Scene, Sphere, WhittedMaterial
 
 __all__ = ["example_scene"]
 
@@ -14,15 +14,15 @@ __all__ = ["example_scene"]
 # ---------------------------------------------------------------------------------------------
 
 def _checkered_floor(height=0.0, reflectivity=0.0):
-    light = Material(shading.colored_material((0.9, 0.9, 0.85), ka=0.1, kd=0.8, ks=0.0),
+    light = WhittedMaterial(shading.colored_material((0.9, 0.9, 0.85), ka=0.1, kd=0.8, ks=0.0),
                      reflectivity=reflectivity)
-    dark = Material(shading.colored_material((0.12, 0.12, 0.15), ka=0.1, kd=0.8, ks=0.0),
+    dark = WhittedMaterial(shading.colored_material((0.12, 0.12, 0.15), ka=0.1, kd=0.8, ks=0.0),
                     reflectivity=reflectivity)
     return Plane([0.0, height, 0.0], [0.0, 1.0, 0.0], light, checker=dark, checker_size=1.0)
 
 
 def _glass():
-    return Material(shading.Material(ka=0.0, kd=0.0, ks=0.6, shininess=200.0),
+    return WhittedMaterial(shading.Material(ka=0.0, kd=0.0, ks=0.6, shininess=200.0),
                     transparency=0.95, ior=1.5)
 
 
@@ -68,9 +68,9 @@ def example_scene(kind="spheres", width=640, height=480):
     """
     ambient = 1.0
     if kind == "spheres":
-        red = Material(shading.colored_material((0.9, 0.15, 0.1), ka=0.1, kd=0.8, ks=0.3,
+        red = WhittedMaterial(shading.colored_material((0.9, 0.15, 0.1), ka=0.1, kd=0.8, ks=0.3,
                                                 shininess=40.0))
-        mirror = Material(shading.colored_material((0.9, 0.9, 0.9), ka=0.0, kd=0.05, ks=0.4,
+        mirror = WhittedMaterial(shading.colored_material((0.9, 0.9, 0.9), ka=0.0, kd=0.05, ks=0.4,
                                                    shininess=200.0), reflectivity=0.85)
         objects = [_checkered_floor(reflectivity=0.2),
                    Sphere([-1.7, 0.8, -0.2], 0.8, red),
@@ -85,7 +85,7 @@ def example_scene(kind="spheres", width=640, height=480):
 
         v, f = shapes.torus(major=1.0, minor=0.35, segments=64, rings=32)
         v = v @ _rotation_x(np.radians(-25)).T + [0.0, 1.4, -0.5]
-        gold = Material(shading.colored_material((0.95, 0.7, 0.2), ka=0.1, kd=0.6, ks=0.5,
+        gold = WhittedMaterial(shading.colored_material((0.95, 0.7, 0.2), ka=0.1, kd=0.6, ks=0.5,
                                                  shininess=60.0), reflectivity=0.3)
         objects = [_checkered_floor(), Mesh(v, f, gold, smooth=True)]
         lights = [shading.point_light([-3.0, 6.0, 4.0], intensity=0.9)]
@@ -94,8 +94,8 @@ def example_scene(kind="spheres", width=640, height=480):
                         width, height)
     elif kind == "glass":
         wall = Plane([0.0, 0.0, -2.0], [0.0, 0.0, 1.0],
-                     Material(shading.colored_material((0.9, 0.9, 0.85), ka=0.2, kd=0.8, ks=0.0)),
-                     checker=Material(shading.colored_material((0.1, 0.3, 0.6), ka=0.2, kd=0.8,
+                     WhittedMaterial(shading.colored_material((0.9, 0.9, 0.85), ka=0.2, kd=0.8, ks=0.0)),
+                     checker=WhittedMaterial(shading.colored_material((0.1, 0.3, 0.6), ka=0.2, kd=0.8,
                                                                ks=0.0)),
                      checker_size=0.5)
         objects = [wall, _checkered_floor(-1.0), Sphere([0.0, 0.0, 0.5], 1.0, _glass())]
@@ -104,13 +104,13 @@ def example_scene(kind="spheres", width=640, height=480):
         camera = Camera([0.0, 0.3, 5.0], [0.0, -0.05, -1.0], [0.0, 1.0, 0.0], np.radians(40),
                         width, height)
     elif kind == "mirrors":
-        mirror = Material(shading.colored_material((0.9, 0.9, 0.9), ka=0.02, kd=0.05, ks=0.0),
+        mirror = WhittedMaterial(shading.colored_material((0.9, 0.9, 0.9), ka=0.02, kd=0.05, ks=0.0),
                           reflectivity=0.9)
         objects = [Plane([-2.0, 0.0, 0.0], [1.0, 0.0, 0.0], mirror),
                    Plane([2.0, 0.0, 0.0], [-1.0, 0.0, 0.0], mirror),
                    _checkered_floor(),
                    Sphere([0.0, 0.6, 0.0], 0.6,
-                          Material(shading.colored_material((0.2, 0.5, 0.95), ka=0.15, kd=0.8,
+                          WhittedMaterial(shading.colored_material((0.2, 0.5, 0.95), ka=0.15, kd=0.8,
                                                             ks=0.3, shininess=30.0)))]
         lights = [shading.point_light([0.0, 5.0, 3.0], intensity=0.9)]
         background = (0.55, 0.7, 0.9)

@@ -10,7 +10,7 @@ from ._common import _dot, _unit_vectors
 from .camera import Camera
 from .intersections import BVH
 
-__all__ = ["Material", "Mesh", "Plane", "Scene", "Sphere"]
+__all__ = ["Mesh", "Plane", "Scene", "Sphere", "WhittedMaterial"]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -18,8 +18,11 @@ __all__ = ["Material", "Mesh", "Plane", "Scene", "Sphere"]
 # ---------------------------------------------------------------------------------------------
 
 @dataclass(frozen=True, eq=False)
-class Material:
+class WhittedMaterial:
     r"""A surface for the ray tracer: Phong coefficients plus reflection and refraction.
+
+    (``raytracing.Material`` is its old name, the same class; :class:`course_lib.shading.Material`
+    is the Phong material it contains.)
 
     The local colour is the Phong model (:func:`course_lib.shading.phong`) with the
     coefficients of `phong`; then a fraction :math:`k_r` (`reflectivity`) of the light seen in
@@ -44,7 +47,7 @@ class Material:
 
     Examples
     --------
-    >>> glass = Material(shading.Material(ka=0.0, kd=0.05, ks=0.5, shininess=100),
+    >>> glass = WhittedMaterial(shading.Material(ka=0.0, kd=0.05, ks=0.5, shininess=100),
     ...                  transparency=0.9, ior=1.5)
     >>> glass.transparency, glass.ior
     (0.9, 1.5)
@@ -82,7 +85,7 @@ class Sphere:
     center : array_like, shape (3,)
     radius : float
         Positive.
-    material : Material
+    material : WhittedMaterial
 
     Examples
     --------
@@ -91,7 +94,7 @@ class Sphere:
     """
     center: object
     radius: float
-    material: Material = Material()
+    material: WhittedMaterial = WhittedMaterial()
 
     def __post_init__(self):
         object.__setattr__(self, "center", as_vector(self.center, "center", 3))
@@ -110,8 +113,8 @@ class Plane:
         A point of the plane (also a corner of the checkerboard's squares).
     normal : array_like, shape (3,)
         Its normal (normalized here): the "outside" for refraction.
-    material : Material
-    checker : Material or None
+    material : WhittedMaterial
+    checker : WhittedMaterial or None
         The material of every other square of a checkerboard, or None for a plain plane.
     checker_size : float
         The squares' side (positive).
@@ -123,7 +126,7 @@ class Plane:
     """
     point: object
     normal: object
-    material: Material = Material()
+    material: WhittedMaterial = WhittedMaterial()
     checker: object = None
     checker_size: float = 1.0
 
@@ -153,7 +156,7 @@ class Mesh:
     vertices : array_like, shape (n, 3)
     faces : array_like of int, shape (m, 3)
         Counter-clockwise seen from outside (the face normals point outwards).
-    material : Material, optional
+    material : WhittedMaterial, optional
     smooth : bool, optional
         Shade with vertex normals interpolated across each triangle (Phong's normal
         interpolation, by the hit's barycentric coordinates) instead of the flat face normals.
@@ -178,7 +181,7 @@ class Mesh:
     (64, 4)
     """
 
-    def __init__(self, vertices, faces, material=Material(), smooth=True, leaf_size=4):
+    def __init__(self, vertices, faces, material=WhittedMaterial(), smooth=True, leaf_size=4):
         self.vertex_normals = shading.vertex_normals(vertices, faces)   # checks both: triangles
         self.face_normals = shading.face_normals(vertices, faces)
         self.vertices = as_points(vertices, "vertices", dims=3)
@@ -205,8 +208,9 @@ class Mesh:
 
 
 def _check_material(material, name="material"):
-    if not isinstance(material, Material):
-        raise TypeError(f"{name} must be a raytracing.Material, got {type(material).__name__}")
+    if not isinstance(material, WhittedMaterial):
+        raise TypeError(f"{name} must be a raytracing.WhittedMaterial, got "
+                        f"{type(material).__name__}")
 
 
 @dataclass(frozen=True, eq=False)

@@ -2,16 +2,13 @@
 
 import numpy as np
 
+from .._linalg import dot as _dot  # noqa: F401 (the package's files use it)
 from .._validate import as_array, as_points
 
 
 # ---------------------------------------------------------------------------------------------
 # Small vector helpers and input checks
 # ---------------------------------------------------------------------------------------------
-
-def _dot(a, b):
-    return np.einsum("...i,...i->...", a, b)
-
 
 def _unit(value, name):
     """`value` as an array of 3D vectors (..., 3), each normalized; zero vectors are rejected."""

@@ -2,16 +2,13 @@
 
 import numpy as np
 
+from .._linalg import dot as _dot  # noqa: F401 (the package's files use it)
 from .._validate import as_array
 
 __all__ = ["WRAP_MODES"]
 
 
 WRAP_MODES = ("repeat", "clamp", "mirror")
-
-
-def _dot(a, b):
-    return np.einsum("...i,...i->...", a, b)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -72,8 +72,8 @@ def build_scene(state):
     floor, red, mirror, glass = base.objects
     kr = state.floor_reflectivity
     floor = rt.Plane(floor.point, floor.normal,
-                     rt.Material(floor.material.phong, reflectivity=kr),
-                     checker=rt.Material(floor.checker.phong, reflectivity=kr),
+                     rt.WhittedMaterial(floor.material.phong, reflectivity=kr),
+                     checker=rt.WhittedMaterial(floor.checker.phong, reflectivity=kr),
                      checker_size=floor.checker_size)
     mirror = rt.Sphere(mirror.center, mirror.radius,
                        replace(mirror.material, reflectivity=state.mirror_reflectivity))
