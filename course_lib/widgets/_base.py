@@ -10,8 +10,8 @@ import numpy as np
 
 from .. import draw
 
-__all__ = ["Explorer", "beside", "bind", "degree_sliders", "figure_3d",
-           "handle_comms_on_main_thread", "labelled", "read_controls", "slider"]
+__all__ = ["Explorer", "PlotterExplorer", "beside", "bind", "degree_sliders", "figure_3d",
+           "handle_comms_on_main_thread", "labelled", "pyvista_faces", "read_controls", "slider"]
 
 _COMM_MESSAGES = ("comm_open", "comm_msg", "comm_close")
 
@@ -322,3 +322,39 @@ class Explorer:
         if encoded is not None:
             bundle["image/png"] = encoded
         return bundle
+
+
+class PlotterExplorer(Explorer):
+    """An explorer that shows the frames of an off-screen pyvista plotter (``self.plotter``).
+
+    The 3D explorers (isosurface, simplification, surface, texture) draw into a
+    :func:`course_lib.draw.offscreen_plotter` and show its frame as an image widget; this base
+    gives them one way to take that frame.
+    """
+
+    def picture(self, kind="png"):
+        """The current picture, rendered off screen, as PNG or JPEG bytes (JPEG for the live
+        view: it encodes several times faster)."""
+        from PIL import Image
+
+        self.plotter.render()
+        buffer = io.BytesIO()
+        image = Image.fromarray(self.plotter.screenshot(return_img=True))
+        image.save(buffer, format=kind, **({"quality": 90} if kind == "jpeg" else {}))
+        return buffer.getvalue()
+
+    def png(self, dpi=None):
+        """The current picture as PNG bytes (for readers without a kernel)."""
+        return self.picture("png")
+
+
+def pyvista_faces(triangles):
+    """Triangles (m, 3) in pyvista's flat cell layout ``[3, a, b, c, 3, ...]``.
+
+    Examples
+    --------
+    >>> pyvista_faces(np.array([[0, 1, 2], [2, 1, 3]])).tolist()
+    [3, 0, 1, 2, 3, 2, 1, 3]
+    """
+    triangles = np.asarray(triangles)
+    return np.column_stack([np.full(len(triangles), 3), triangles]).ravel()

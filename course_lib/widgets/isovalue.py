@@ -24,7 +24,6 @@ surfaces here never reach the volume's border. Our table resolves ambiguous face
 on its own (``marching_cubes(..., table="classic")``, :func:`classic_marching_cubes`), and on
 the noisy volume holes appear, drawn in red.
 """
-import io
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -32,7 +31,7 @@ import numpy as np
 
 from .. import draw, scivis
 from .._validate import as_choice
-from ._base import Explorer, bind
+from ._base import Explorer, PlotterExplorer, bind, pyvista_faces
 
 __all__ = ["FIELDS", "IsolineExplorer", "IsosurfaceExplorer", "State", "State3D", "VOLUMES",
            "alternative_segments", "classic_marching_cubes", "example_data", "example_volume",
@@ -531,11 +530,8 @@ def _gradient(kind):
     return scivis.gradient(data.values, data.spacing)
 
 
-def _faces(triangles):
-    return np.column_stack([np.full(len(triangles), 3), triangles]).ravel()
 
-
-class IsosurfaceExplorer(Explorer):
+class IsosurfaceExplorer(PlotterExplorer):
     """Marching cubes in 3D: isovalue, volume, consistent or classic table, camera.
 
     The picture is rendered by pyvista off screen and shown as an image.
@@ -563,7 +559,7 @@ class IsosurfaceExplorer(Explorer):
         self.plotter = draw.offscreen_plotter(420, 380)
         # start from a placeholder triangle and a placeholder line (pyvista refuses empty meshes);
         # _draw replaces their contents and hides whichever is empty
-        self.mesh = pv.PolyData(np.eye(3), _faces(np.array([[0, 1, 2]])))
+        self.mesh = pv.PolyData(np.eye(3), pyvista_faces(np.array([[0, 1, 2]])))
         self.actor = self.plotter.add_mesh(self.mesh, color="#e8b04a", smooth_shading=False,
                                            backface_params={"color": "#4a78c8"},
                                            specular=0.3)
@@ -615,7 +611,7 @@ class IsosurfaceExplorer(Explorer):
     def _draw(self, s):
         pv = self.pv
         if len(s["triangles"]):
-            new = pv.PolyData(s["vertices"], _faces(s["triangles"]))
+            new = pv.PolyData(s["vertices"], pyvista_faces(s["triangles"]))
             new.point_data.set_array(s["normals"], "Normals")
             new.point_data.active_normals_name = "Normals"
             self.mesh.copy_from(new, deep=False)
@@ -630,17 +626,3 @@ class IsosurfaceExplorer(Explorer):
         self.plotter.camera_position = [tuple(eye), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0)]
         self.image.value = self.picture("jpeg")
         self.info.value = s["text"]
-
-    def picture(self, kind="png"):
-        """The current picture, rendered off screen, as PNG or JPEG bytes."""
-        from PIL import Image
-
-        self.plotter.render()
-        buffer = io.BytesIO()
-        image = Image.fromarray(self.plotter.screenshot(return_img=True))
-        image.save(buffer, format=kind, **({"quality": 90} if kind == "jpeg" else {}))
-        return buffer.getvalue()
-
-    def png(self, dpi=None):
-        """The current picture as PNG bytes (for readers without a kernel)."""
-        return self.picture("png")

@@ -7,13 +7,12 @@ is rendered (pyvista, off screen) with each vertex coloured by its quadric error
 stands for), and the five cheapest edges still in the priority queue are drawn in red and listed
 with their cost: the first of them that passes the validity checks is the next to go.
 """
-import io
 from dataclasses import dataclass
 
 import numpy as np
 
 from .. import draw, mesh
-from ._base import Explorer, bind
+from ._base import PlotterExplorer, bind, pyvista_faces
 
 __all__ = ["START_FACES", "TARGET_FACES", "SimplificationExplorer", "State", "bumpy_sphere",
            "scene"]
@@ -102,11 +101,8 @@ def _queue_table(queue):
             f"<th>new position</th></tr>{rows}</table>")
 
 
-def _cells(faces):
-    return np.column_stack([np.full(len(faces), 3), faces]).ravel()
 
-
-class SimplificationExplorer(Explorer):
+class SimplificationExplorer(PlotterExplorer):
     """Slide the face count down and watch the quadric error grow where the mesh was bumpy.
 
     Examples
@@ -129,7 +125,7 @@ class SimplificationExplorer(Explorer):
         self.state = state or State()
         s = scene(self.state)
         self.plotter = draw.offscreen_plotter(420, 380)
-        self.poly = pv.PolyData(s["vertices"], _cells(s["faces"]))
+        self.poly = pv.PolyData(s["vertices"], pyvista_faces(s["faces"]))
         self.poly["error"] = s["errors"]
         self.plotter.add_mesh(self.poly, scalars="error", cmap="viridis",
                               clim=(0, 0.5 * s["max_error"]), show_edges=True, edge_color="#303030",
@@ -158,7 +154,7 @@ class SimplificationExplorer(Explorer):
     def _draw(self, s):
         import pyvista as pv
 
-        new = pv.PolyData(s["vertices"], _cells(s["faces"]))
+        new = pv.PolyData(s["vertices"], pyvista_faces(s["faces"]))
         new["error"] = s["errors"]
         self.poly.copy_from(new)
         self.poly.set_active_scalars("error")
@@ -168,20 +164,6 @@ class SimplificationExplorer(Explorer):
         self.info.value = (s["text"] + " Red: the cheapest edges in the priority queue "
                            "(the next collapses).")
         self.table.value = _queue_table(s["queue"])
-
-    def picture(self, kind="png"):
-        """The current picture, rendered off screen, as PNG or JPEG bytes."""
-        from PIL import Image
-
-        self.plotter.render()
-        buffer = io.BytesIO()
-        image = Image.fromarray(self.plotter.screenshot(return_img=True))
-        image.save(buffer, format=kind, **({"quality": 90} if kind == "jpeg" else {}))
-        return buffer.getvalue()
-
-    def png(self, dpi=None):
-        """The current picture as PNG bytes (for readers without a kernel)."""
-        return self.picture("png")
 
 
 def _lines(k):

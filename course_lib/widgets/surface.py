@@ -7,14 +7,13 @@ one control point and move it, or change its weight; the camera turns with two m
 Moving a point of a Bézier patch changes the whole patch; of a B-spline patch only the part over
 the point's support.
 """
-import io
 from dataclasses import dataclass
 
 import numpy as np
 
 from .. import curves, draw, surfaces
 from .._validate import as_choice
-from ._base import Explorer, bind
+from ._base import PlotterExplorer, bind
 
 __all__ = ["KINDS", "State", "SurfaceExplorer", "control_grid", "scene"]
 
@@ -130,7 +129,7 @@ def _polyline_cells(lines):
     return np.column_stack([np.full(k, m), ids]).ravel()
 
 
-class SurfaceExplorer(Explorer):
+class SurfaceExplorer(PlotterExplorer):
     """Pick a control point and lift it, change its weight, switch the patch type, turn the view.
 
     The picture is rendered by pyvista off screen and shown as an image, so it works wherever
@@ -221,18 +220,3 @@ class SurfaceExplorer(Explorer):
         self._set_camera()
         self.image.value = self.picture("jpeg")
         self.info.value = s["text"] + (" Blue: the part of the patch the lift moved.")
-
-    def picture(self, kind="png"):
-        """The current picture, rendered off screen, as PNG or JPEG bytes (JPEG for the live
-        view: it encodes several times faster)."""
-        from PIL import Image
-
-        self.plotter.render()
-        buffer = io.BytesIO()
-        image = Image.fromarray(self.plotter.screenshot(return_img=True))
-        image.save(buffer, format=kind, **({"quality": 90} if kind == "jpeg" else {}))
-        return buffer.getvalue()
-
-    def png(self, dpi=None):
-        """The current picture as PNG bytes (for readers without a kernel)."""
-        return self.picture("png")

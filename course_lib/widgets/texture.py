@@ -30,7 +30,7 @@ import numpy as np
 
 from .. import draw, texturing
 from .._validate import as_choice
-from ._base import Explorer, labelled, read_controls, slider
+from ._base import PlotterExplorer, labelled, read_controls, slider
 
 __all__ = ["MAPPINGS", "SIZES", "State", "TEXTURES", "TextureExplorer", "compendium_map",
            "filtering", "mesh_grid", "scene", "texture_image", "texture_uv"]
@@ -388,7 +388,7 @@ def _structured_points(array):
     return np.column_stack([array[..., k].ravel(order="F") for k in range(3)])
 
 
-class TextureExplorer(Explorer):
+class TextureExplorer(PlotterExplorer):
     """Texture, parameters, texture size, sampling, mapping and camera; the textured object
     rendered off screen, and the filtering panel.
 
@@ -561,16 +561,6 @@ class TextureExplorer(Explorer):
                 image.set_data(np.clip(s["filtering"][key][method], 0, 1))
             self._texture_key = self._key()
         self.info.value = s["text"]
-
-    def picture(self, kind="png"):
-        """The textured object rendered off screen, as PNG or JPEG bytes."""
-        from PIL import Image
-
-        self.plotter.render()
-        buffer = io.BytesIO()
-        image = Image.fromarray(self.plotter.screenshot(return_img=True))
-        image.save(buffer, format=kind, **({"quality": 90} if kind == "jpeg" else {}))
-        return buffer.getvalue()
 
     def png(self, dpi=72):
         """The rendered object above the filtering panel, as one PNG (for readers without a
