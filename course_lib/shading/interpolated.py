@@ -134,6 +134,12 @@ class BarycentricBuffers(NamedTuple):
         corners in the order of the face's vertices (0 on background).
     depth : ndarray, shape (height, width)
         Viewport depth in [0, 1], inf on background.
+    drawn : ndarray of bool, shape (height, width)
+        ``ids >= 0``: the pixels the mesh covers.
+    drawn_vertices, drawn_weights : ndarray, shape (p, 3)
+        For the p drawn pixels in row order, the three vertex indices of the visible face and
+        their weights: a per-vertex quantity q is ``einsum("pk,pkc->pc", drawn_weights,
+        q[drawn_vertices])`` there.
 
     Examples
     --------
@@ -147,6 +153,9 @@ class BarycentricBuffers(NamedTuple):
     ids: np.ndarray
     weights: np.ndarray
     depth: np.ndarray
+    drawn: np.ndarray
+    drawn_vertices: np.ndarray
+    drawn_weights: np.ndarray
 
 
 def barycentric_buffers(vertices, faces, view, projection, width, height,
@@ -173,7 +182,7 @@ def barycentric_buffers(vertices, faces, view, projection, width, height,
     Returns
     -------
     BarycentricBuffers
-        ``ids``, ``weights`` and ``depth``.
+        ``ids``, ``weights`` and ``depth``, and the same for the drawn pixels only.
 
     Raises
     ------
@@ -199,8 +208,9 @@ def barycentric_buffers(vertices, faces, view, projection, width, height,
     zb = visibility.render_depth(v[f].reshape(-1, 3), np.arange(3 * len(f)).reshape(-1, 3),
                                  view, projection, width, height, values=corners,
                                  cull_back_faces=cull_back_faces)
-    weights = np.where((zb.ids >= 0)[..., None], zb.image, 0.0)
-    return BarycentricBuffers(zb.ids, weights, zb.depth)
+    drawn = zb.ids >= 0
+    weights = np.where(drawn[..., None], zb.image, 0.0)
+    return BarycentricBuffers(zb.ids, weights, zb.depth, drawn, f[zb.ids[drawn]], weights[drawn])
 
 
 class _Raster(NamedTuple):
@@ -209,13 +219,19 @@ class _Raster(NamedTuple):
     depth: np.ndarray
 
 
+def _at_pixels(buffers, values):
+    """Per-vertex `values` interpolated to the drawn pixels of `buffers`: (mask, values there)."""
+    return buffers.drawn, np.einsum("pk,pkc->pc", buffers.drawn_weights,
+                                    values[buffers.drawn_vertices])
+
+
 def _from_buffers(buffers, f, values):
     """What the z-buffer would give for per-vertex `values`, from the weights of `buffers`."""
     if values is None:
         return _Raster(buffers.ids, None, buffers.depth)
-    seen = buffers.ids >= 0
+    seen, at_pixels = _at_pixels(buffers, values)
     image = np.zeros(buffers.ids.shape + values.shape[1:])
-    image[seen] = np.einsum("pk,pkc->pc", buffers.weights[seen], values[f[buffers.ids[seen]]])
+    image[seen] = at_pixels
     return _Raster(buffers.ids, image, buffers.depth)
 
 
@@ -391,11 +407,16 @@ def render_shaded(vertices, faces, view, projection, width, height, lights, mate
         zb = raster(colours)
         image = zb.image
     else:
-        zb = raster(np.hstack([v, vn]))
+        if fragments is not None:                  # straight to the drawn pixels
+            zb = fragments
+            mask, at_pixels = _at_pixels(fragments, np.hstack([v, vn]))
+        else:
+            zb = raster(np.hstack([v, vn]))
+            mask = zb.ids >= 0
+            at_pixels = zb.image[mask]
         image = np.zeros((zb.ids.shape[0], zb.ids.shape[1], 3))
-        mask = zb.ids >= 0
         if mask.any():
-            points, nrm = zb.image[mask][:, :3], zb.image[mask][:, 3:]
+            points, nrm = at_pixels[:, :3], at_pixels[:, 3:]
             length = np.sqrt(_dot(nrm, nrm))
             fallback = length < 1e-9                  # opposite normals cancelled: use the face's
             if fallback.any():
