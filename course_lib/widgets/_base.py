@@ -330,6 +330,13 @@ class PlotterExplorer(Explorer):
     The 3D explorers (isosurface, simplification, surface, texture) draw into a
     :func:`course_lib.draw.offscreen_plotter` and show its frame as an image widget; this base
     gives them one way to take that frame.
+
+    Examples
+    --------
+    >>> from course_lib.widgets.isovalue import IsosurfaceExplorer
+    >>> explorer = IsosurfaceExplorer()
+    >>> isinstance(explorer, PlotterExplorer), explorer.png()[:4], explorer.picture("jpeg")[:2]
+    (True, b'\\x89PNG', b'\\xff\\xd8')
     """
 
     def picture(self, kind="png"):
