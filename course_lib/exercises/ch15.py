@@ -65,9 +65,6 @@ def _nice_unit(rng):
 class _Parts(PartsAnswer, DrawnExercise):
     """An answer made of several numbers, each with slips of its own (see PartsAnswer)."""
 
-    def _check(self, answer):
-        return self.judge_parts(answer)
-
 
 # ---------------------------------------------------------------------------------------------
 # Intersections

@@ -98,7 +98,7 @@ class _Parts(DrawnExercise):
     def separated(self, mistakes):
         return parts_separated(self._parts())
 
-    def _judge(self, answer):
+    def _check(self, answer):          # diagnose_parts ends with the hint: not hinted again
         return diagnose_parts(answer, self._parts(), "your answer", self.form_hint, self.hint)
 
 

@@ -307,7 +307,7 @@ class OptimalPosition(_TwoVertices):
     def mistakes(self):
         return []
 
-    def _judge(self, answer):
+    def _check(self, answer):          # diagnose_parts ends with the hint: not hinted again
         return diagnose_parts(answer, self._parts(), "your answer", "`[x, y, z, cost]`.",
                               self.hint)
 

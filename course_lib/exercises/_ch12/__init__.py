@@ -99,8 +99,5 @@ def _material_words(**coefficients):
 class _Parts(PartsAnswer, DrawnExercise):
     """An answer made of several numbers, each with slips of its own (see PartsAnswer)."""
 
-    def _judge(self, answer):
-        return self.judge_parts(answer)
-
 
 _ONE_NUMBER = "**Answer:** one number. " + DECIMALS

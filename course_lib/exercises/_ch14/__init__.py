@@ -42,9 +42,6 @@ class _Chapter14(DrawnExercise):
 class _Parts(PartsAnswer, _Chapter14):
     """An answer made of several numbers, each with slips of its own (see PartsAnswer)."""
 
-    def _judge(self, answer):
-        return self.judge_parts(answer)
-
 
 _ONE_NUMBER = "**Answer:** one number. " + DECIMALS
 _UV = "**Answer:** a list of 2 numbers `[u, v]`. " + DECIMALS

@@ -432,9 +432,10 @@ class PartsAnswer:
     Put it before the exercise base class. A subclass implements ``parts()``: a list of
     (name, expected value, list of :class:`Mistake`), as for :func:`diagnose_parts`; the parts
     are computed when a variant is drawn (the variant is kept only if
-    :func:`parts_separated`), and ``judge_parts(answer)`` gives the feedback (call it from the
-    exercise's ``_check``). ``what`` names the whole answer and ``form_hint`` says what to type;
-    ``self.hint`` (how to get the numbers right) ends the feedback on unexplained numbers.
+    :func:`parts_separated`), and ``judge_parts(answer)`` gives the feedback: the mixin's
+    ``_check``. ``what`` names the whole answer and ``form_hint`` says what to type;
+    ``self.hint`` (how to get the numbers right) ends the feedback on unexplained numbers, once
+    (:func:`diagnose_parts` adds it, so this ``_check`` does not hint the verdict again).
 
     Examples
     --------
@@ -450,8 +451,6 @@ class PartsAnswer:
     ...                 ("the product", p, [Mistake(s, "That is the sum.", "added")])]
     ...     def statement(self):
     ...         return f"Give the sum and the product of {self.a} and {self.b}."
-    ...     def _check(self, answer):
-    ...         return self.judge_parts(answer)
     >>> ex = SumProduct(seed=0)
     >>> s = ex.a + ex.b
     >>> ex.check([s, ex.a * ex.b]).status, ex.check([s, s]).diagnosis
@@ -474,3 +473,5 @@ class PartsAnswer:
     def judge_parts(self, answer):
         """The feedback on `answer` by :func:`diagnose_parts`."""
         return diagnose_parts(answer, self._parts, self.what, self.form_hint, self.hint)
+
+    _check = judge_parts

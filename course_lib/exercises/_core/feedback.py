@@ -532,8 +532,7 @@ def hinted(feedback, hint, generic):
     ----------
     feedback : Feedback
     hint : str or None
-        What to add (how to get the answer right); nothing is added when it is empty or when
-        the message already ends with it.
+        What to add (how to get the answer right); nothing is added when it is empty.
     generic : set of str
         The diagnoses that name no anticipated slip (such as ``"components differ"``).
 
@@ -548,14 +547,8 @@ def hinted(feedback, hint, generic):
     'Not this. Divide by the length.'
     >>> hinted(Feedback("wrong", "Transposed.", "transposed"), "Divide.", {"value differs"}).message
     'Transposed.'
-
-    A feedback that already ends with the hint (:func:`diagnose_parts` adds it) keeps one copy:
-
-    >>> hinted(hinted(fb, "Divide.", {"value differs"}), "Divide.", {"value differs"}).message
-    'Not this. Divide.'
     """
-    if hint and feedback.status == "wrong" and feedback.diagnosis in generic \
-            and not feedback.message.endswith(hint):
+    if hint and feedback.status == "wrong" and feedback.diagnosis in generic:
         return Feedback("wrong", f"{feedback.message} {hint}", feedback.diagnosis)
     return feedback
 
