@@ -36,9 +36,10 @@ def _all_modules():
 
 DRAWING_LAYER = {"course_lib.draw"}
 # a private module (leading underscore) is internal unless it declares a public API (__all__)
+ALL_MODULES = _all_modules()
 INTERNAL_MODULES = {"course_lib.widgets._clip2d"} | {
-    m for m in _all_modules() if m.rsplit(".", 1)[1].startswith("_") and not _declares_api(m)}
-DOCUMENTED_MODULES = tuple(m for m in _all_modules() if m not in INTERNAL_MODULES)
+    m for m in ALL_MODULES if m.rsplit(".", 1)[1].startswith("_") and not _declares_api(m)}
+DOCUMENTED_MODULES = tuple(m for m in ALL_MODULES if m not in INTERNAL_MODULES)
 ALGORITHM_MODULES = tuple(m for m in DOCUMENTED_MODULES
                           if m.count(".") == 1 and m not in DRAWING_LAYER) + (
     "course_lib.exercises.core",)
