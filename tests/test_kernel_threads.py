@@ -100,14 +100,41 @@ def test_course_lib_widgets_handles_subshell_messages_on_the_main_thread(kernel)
         send_on_subshell(kernel, sid, comm_id, {"value": value})
         assert wait_for(kernel, "print(len(threads))", str(count)) == str(count)
     assert run(kernel, "print(threads)").strip() == "['MainThread', 'MainThread', 'MainThread']"
-    # a burst (a slider dragged fast): every update handled, in the order sent
+    # a burst (a slider dragged fast) while the main thread is busy: the values still waiting
+    # are merged into the newest, which is handled last; the order is kept
+    run(kernel, "import time\nslider.observe(lambda change: time.sleep(0.2), names='value')")
     for value in range(10, 20):
         send_on_subshell(kernel, sid, comm_id, {"value": value})
-    assert wait_for(kernel, "print(len(threads))", "13") == "13"
-    assert run(kernel, "print(values, set(threads))").strip() == (
-        f"{[3, 4, 5, *range(10, 20)]} {{'MainThread'}}")
-    forwarded = run(kernel, "print(get_ipython().kernel.shell_handlers['comm_msg'].forwarded)")
+    assert wait_for(kernel, "print(values[-1])", "19") == "19"
+    time.sleep(0.5)
+    values = eval(run(kernel, "print(values)"))
+    burst = values[3:]
+    assert burst == sorted(burst) and burst[-1] == 19, values
+    assert len(burst) < 10, f"every stale value was handled in turn: {burst}"
+    assert run(kernel, "print(set(threads))").strip() == "{'MainThread'}"
+    handler = "get_ipython().kernel.shell_handlers['comm_msg']"
+    forwarded, merged = run(kernel, f"print({handler}.forwarded, {handler}.merged)").split()
     assert int(forwarded) >= 12         # all but (at most) the first went to the subshell
+    assert int(merged) == 10 - len(burst)
+
+
+def test_messages_of_other_kinds_or_other_widgets_are_never_merged():
+    from course_lib.widgets._base import _supersedes
+
+    def update(comm, state, buffers=()):
+        return {"content": {"comm_id": comm, "data": {"method": "update", "state": state,
+                                                      "buffer_paths": list(buffers)}}}
+
+    def mouse(comm, kind):
+        return {"content": {"comm_id": comm, "data": {"method": "custom",
+                                                      "content": {"type": kind}}}}
+    assert _supersedes(update("a", {"value": 2}), update("a", {"value": 1}))
+    assert not _supersedes(update("b", {"value": 2}), update("a", {"value": 1}))
+    assert not _supersedes(update("a", {"value": 2}), update("a", {"value": 1, "index": 0}))
+    assert not _supersedes(update("a", {"value": 2}, [["value"]]), update("a", {"value": 1}))
+    assert _supersedes(mouse("a", "motion_notify"), mouse("a", "motion_notify"))
+    assert not _supersedes(mouse("a", "motion_notify"), mouse("a", "button_press"))
+    assert not _supersedes(mouse("a", "button_release"), mouse("a", "motion_notify"))
 
 
 def test_a_vtk_explorer_moved_from_a_subshell_renders_its_picture(kernel):

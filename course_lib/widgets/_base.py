@@ -31,6 +31,9 @@ def handle_comms_on_main_thread(kernel=None):
     the message as its parent (so replies and outputs are routed as before). Every widget of
     the kernel then behaves as with ``commsOverSubshells`` set to ``disabled``, whatever the
     setting; what is lost is only that a widget answers while a cell is still running.
+    Inputs that arrive faster than an explorer draws are merged: a newer value of the same
+    slider, or a newer mouse move over the same figure, replaces the one still waiting, so the
+    picture follows the latest input instead of falling behind (:func:`_on_main_thread`).
     Importing :mod:`course_lib.widgets` calls it; calling it again changes nothing.
 
     Parameters
@@ -67,21 +70,72 @@ def handle_comms_on_main_thread(kernel=None):
     return True
 
 
+def _supersedes(new, old):
+    """Whether comm message `new` makes the still unhandled `old` pointless: the same widget,
+    and either a state update of the same fields (a slider's newer value) or another mouse move
+    over the same ipympl canvas. Messages with binary buffers are never merged."""
+    a, b = new["content"], old["content"]
+    if a.get("comm_id") != b.get("comm_id") or new.get("buffers") or old.get("buffers"):
+        return False
+    da, db = a.get("data") or {}, b.get("data") or {}
+    if da.get("method") == db.get("method") == "update":
+        return (not da.get("buffer_paths") and not db.get("buffer_paths")
+                and set(db.get("state") or {}) <= set(da.get("state") or {}))
+    if da.get("method") == db.get("method") == "custom":
+        ca, cb = da.get("content") or {}, db.get("content") or {}
+        return ca.get("type") == cb.get("type") == "motion_notify"
+    return False
+
+
 def _on_main_thread(handler, loop, main):
     """`handler(stream, ident, msg)`, run on thread `main` by its event loop `loop`.
 
-    The wrapper counts the messages it handed over in its attribute ``forwarded`` (the browser
-    tests read it to prove that JupyterLab really sent messages to a subshell)."""
+    Messages wait for the main thread in a queue, in the order received. While the main thread
+    is busy (an explorer drawing its frame), a slider sends newer values and ipympl newer mouse
+    positions: a message that merely repeats the one waiting last in the queue with newer
+    values (:func:`_supersedes`) takes its place, so the main thread renders the latest input
+    instead of every stale one in turn (the front end does not wait for it: the subshell has
+    already answered). The wrapper counts the messages it handed over in ``forwarded`` (the
+    browser tests read it to prove that JupyterLab really sent messages to a subshell) and the
+    ones merged into a newer one in ``merged``. Setting its ``trace`` to a callable
+    ``trace(event, msg_id)`` reports "arrive", "start" and "end" of every forwarded message
+    (the browser benchmark times a frame's path with it)."""
+    waiting = []                       # [context, stream, ident, msg], oldest first
+    lock = threading.Lock()
+
+    def handle_oldest():
+        with lock:
+            context, stream, ident, msg = waiting.pop(0)
+        trace = forward.trace
+        if trace is not None:
+            trace("start", msg["header"]["msg_id"])
+        try:
+            context.run(handler, stream, ident, msg)
+        finally:
+            if trace is not None:
+                trace("end", msg["header"]["msg_id"])
+
     @functools.wraps(handler)
     def forward(stream, ident, msg):
         if threading.current_thread() is main:
             return handler(stream, ident, msg)
         forward.forwarded += 1
+        if forward.trace is not None:
+            forward.trace("arrive", msg["header"]["msg_id"])
         # the context carries the message as the kernel's parent (set by the subshell)
-        loop.add_callback(contextvars.copy_context().run, handler, stream, ident, msg)
+        entry = [contextvars.copy_context(), stream, ident, msg]
+        with lock:
+            if waiting and _supersedes(msg, waiting[-1][3]):
+                waiting[-1] = entry
+                forward.merged += 1
+                return None
+            waiting.append(entry)
+        loop.add_callback(handle_oldest)
         return None
     forward._on_main_thread = True
     forward.forwarded = 0
+    forward.merged = 0
+    forward.trace = None
     return forward
 
 
