@@ -193,7 +193,7 @@ def test_camera_reports_impossible_cameras_without_raising():
     assert "up must not be the zero vector" in ex.info.value
     ex.controls["up_z"].value = 1.0
     ex.controls["elevation_deg"].value = 89.0
-    assert "M_{WCS" in ex.info.value                       # nearly vertical still works
+    assert "WCS→ECS" in ex.info.value                      # nearly vertical still works
     ex.controls["near"].value = 6.0
     ex.controls["far"].value = 5.0
     assert "far must be greater than near" in ex.info.value

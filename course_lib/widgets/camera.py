@@ -197,10 +197,12 @@ def scene(state):
             lines.append(transforms.apply(m, np.array(piece))[:, :2])
     axes = view[:3, :3].T                                   # columns: x_e, y_e, z_e in WCS
     eye = np.array([state.eye_x, state.eye_y, state.eye_z])
-    text = (f"$M_{{WCS \\to ECS}} = {fmt.matrix_latex(view, 2)}$ &nbsp; "
-            f"$M_{{ECS \\to CSS}} = {fmt.matrix_latex(proj, 2)}$<br>"
-            f"$x_e = {fmt.vector_latex(axes[:, 0], 2)}$, $y_e = {fmt.vector_latex(axes[:, 1], 2)}$,"
-            f" $z_e = {fmt.vector_latex(axes[:, 2], 2)}$ (the rows of the rotation part)")
+    text = (f"<i>M</i><sub>WCS→ECS</sub> = {fmt.matrix_html(view, 2)} &nbsp; "
+            f"<i>M</i><sub>ECS→CSS</sub> = {fmt.matrix_html(proj, 2)}<br>"
+            f"<i>x<sub>e</sub></i> = {fmt.vector_html(axes[:, 0], 2)}, "
+            f"<i>y<sub>e</sub></i> = {fmt.vector_html(axes[:, 1], 2)}, "
+            f"<i>z<sub>e</sub></i> = {fmt.vector_html(axes[:, 2], 2)} "
+            "(the rows of the rotation part)")
     return {"error": None, "view": view, "projection": proj, "eye": eye, "axes": axes,
             "volume": edges, "polygons": [polygons[i] for i in order],
             "colors": [colors[i] for i in order], "lines": lines, "text": text}
@@ -215,7 +217,7 @@ class CameraExplorer(Explorer):
     --------
     >>> explorer = CameraExplorer()
     >>> explorer.controls["projection"].value = "orthographic"
-    >>> explorer.state.projection, "M_{ECS" in explorer.info.value
+    >>> explorer.state.projection, "ECS→CSS" in explorer.info.value
     ('orthographic', True)
     """
 
@@ -270,7 +272,7 @@ class CameraExplorer(Explorer):
             w.VBox([projection, c["fov_deg"], c["half_size"], c["oblique_deg"],
                     c["oblique_scale"]]),
         ])
-        self.info = w.HTMLMath()
+        self.info = w.HTML()
         self.widget = w.VBox([self.fig.canvas, columns, self.info])
         self._enable_projection_controls()
         self._draw(s)

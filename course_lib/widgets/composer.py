@@ -6,6 +6,7 @@ each with its sliders. The F is drawn after every step, the composed matrix
 toggle applies the same operations in the reverse order: the result moves, because matrix
 products do not commute. The result of the other order stays on the figure as a dashed outline.
 """
+import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -87,6 +88,18 @@ class Operation:
         """
         return OPERATIONS[self.kind][3](*self.params)
 
+    def html(self):
+        """The operation's name with its parameters in HTML, e.g. ``SH<sub>x</sub>(0.5)``.
+
+        Examples
+        --------
+        >>> Operation("rotate about point", (90, 1, 1)).html()
+        'R<sub>(1, 1)</sub>(90°)'
+        """
+        name = self.latex()
+        name = re.sub(r"_\{(.*?)\}", r"<sub>\1</sub>", name)
+        return re.sub(r"_(\w)", r"<sub>\1</sub>", name).replace("-", "\u2212")
+
     def latex(self):
         """The operation's name with its parameters, e.g. ``T(2, 0.5)``.
 
@@ -150,15 +163,15 @@ def scene(state):
     else:
         composed = other = np.eye(3)
     labels = [op.latex() for op in ops]
+    names = [op.html() for op in ops]
     commute = bool(np.allclose(composed, other))
-    product = r"\,".join(reversed(labels)) if labels else "I"
+    product = "&thinsp;".join(reversed(names)) if names else "I"
     order = "listed order reversed" if state.reverse else "listed order"
-    text = (f"Applied in the {order}, first to last: "
-            f"{', '.join(f'${label}$' for label in labels) or 'nothing'}.<br>"
-            f"$M = {product} = {fmt.matrix_latex(composed, 2)}$<br>"
+    text = (f"Applied in the {order}, first to last: {', '.join(names) or 'nothing'}.<br>"
+            f"<i>M</i> = {product} = {fmt.matrix_html(composed, 2)}<br>"
             + ("The other order gives the <i>same</i> matrix: these operations commute."
                if commute else
-               f"The other order gives $M' = {fmt.matrix_latex(other, 2)} \\neq M$ "
+               f"The other order gives <i>M′</i> = {fmt.matrix_html(other, 2)} ≠ <i>M</i> "
                "(dashed outline): matrix products do not commute."))
     return {"original": SHAPE, "steps": steps, "labels": labels, "matrix": composed,
             "other_matrix": other, "other_result": transforms.apply(other, SHAPE),
@@ -272,7 +285,7 @@ class ComposerExplorer(Explorer):
                                       description="apply in reverse order", icon="exchange",
                                       layout=w.Layout(width="200px"))
         self.reverse.observe(lambda _: self.refresh(), names="value")
-        self.info = w.HTMLMath(value=s["text"])
+        self.info = w.HTML(value=s["text"])
         for op in self.state.operations:
             self._append_row(op)
         self.widget = w.VBox([self.rows_box, w.HBox([self.add_button, self.reverse]),

@@ -69,7 +69,7 @@ def scene(state):
         ``axis`` (unit vector), ``angle`` (radians), ``q`` (scalar first), ``matrix`` (3x3),
         ``frame`` (the matrix's columns: the rotated x, y, z axes), ``vertices`` (the rotated F),
         ``face_colors``, ``axis_line`` (2x3 points), ``arc`` (points sweeping the angle about
-        the axis), and ``text`` (the readout, HTML with LaTeX).
+        the axis), and ``text`` (the readout, HTML).
 
     Examples
     --------
@@ -103,7 +103,7 @@ def scene(state):
 
 
 def readout(n, theta, q, m):
-    """The quaternion and its matrix as HTML with LaTeX, for the panel beside the figure.
+    """The quaternion and its matrix as HTML, for the panel beside the figure.
 
     Examples
     --------
@@ -111,16 +111,15 @@ def readout(n, theta, q, m):
     >>> "45°" in readout(np.array([0, 0, 1.0]), np.pi / 2, np.array([0.7, 0, 0, 0.7]), np.eye(3))
     True
     """
-    half = theta / 2
+    half = fmt.number(np.degrees(theta / 2), 1)
     return (
-        f"<b>axis</b> $\\hat n = {fmt.vector_latex(n)}$, <b>angle</b> "
-        f"$\\theta = {fmt.number(np.degrees(theta), 1)}°$<br>"
-        f"$q = (\\cos\\tfrac{{\\theta}}{{2}},\\ \\sin\\tfrac{{\\theta}}{{2}}\\,\\hat n)"
-        f" = (\\cos {fmt.number(np.degrees(half), 1)}°,\\ "
-        f"\\sin {fmt.number(np.degrees(half), 1)}°\\,\\hat n)$<br>"
-        f"$q = (s, x, y, z) = {fmt.vector_latex(q)}$, "
-        f"$\\lVert q \\rVert = {fmt.number(quaternions.norm(q))}$<br>"
-        f"$R_q = {fmt.matrix_latex(m)}$"
+        f"<b>axis</b> <i>n̂</i> = {fmt.vector_html(n)}, <b>angle</b> "
+        f"<i>θ</i> = {fmt.number(np.degrees(theta), 1)}°<br>"
+        f"<i>q</i> = (cos <sup>θ</sup>&frasl;<sub>2</sub>, sin <sup>θ</sup>&frasl;<sub>2</sub> "
+        f"<i>n̂</i>) = (cos {half}°, sin {half}° <i>n̂</i>)<br>"
+        f"<i>q</i> = (<i>s, x, y, z</i>) = {fmt.vector_html(q)}, "
+        f"‖<i>q</i>‖ = {fmt.number(quaternions.norm(q))}<br>"
+        f"<i>R<sub>q</sub></i> = {fmt.matrix_html(m)}"
     )
 
 
@@ -166,7 +165,7 @@ class QuaternionExplorer(Explorer):
         self.azimuth, self.elevation, self.angle = sliders.values()
         bind(self.state, {"azimuth_deg": self.azimuth, "elevation_deg": self.elevation,
                           "angle_deg": self.angle}, self.update)
-        self.info = w.HTMLMath(value=s["text"], layout=w.Layout(width="330px"))
+        self.info = w.HTML(value=s["text"], layout=w.Layout(width="330px"))
         self.widget = beside(self.fig.canvas, w.VBox([*sliders.values(), self.info]))
 
     def update(self):
