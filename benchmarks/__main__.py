@@ -1,4 +1,8 @@
-"""Run the benchmarks: ``python -m benchmarks [--quick] [--output PATH]``."""
+"""Run the benchmarks: ``python -m benchmarks [--quick] [--browser] [--output PATH]``.
+
+Without ``--browser``: the library against reference libraries, and the explorers' updates in
+the kernel. With ``--browser``: every explorer timed in JupyterLab in headless chromium
+(:mod:`benchmarks.browser`); its section of results.md is replaced and the rest kept."""
 import argparse
 import datetime
 import importlib
@@ -8,6 +12,8 @@ import sys
 from pathlib import Path
 
 import numpy as np
+
+from . import browser
 
 HERE = Path(__file__).resolve().parent
 # one module per chapter, benchmarks/chNN.py, each with operations(quick) and widgets(quick)
@@ -50,8 +56,14 @@ WIDGET_COLUMNS = [
 def main(argv=None):
     parser = argparse.ArgumentParser(description="Time course_lib against reference libraries.")
     parser.add_argument("--quick", action="store_true", help="tiny sizes (a smoke test)")
+    parser.add_argument("--browser", action="store_true",
+                        help="time every explorer in JupyterLab in headless chromium")
+    parser.add_argument("--lesson", action="append", default=None,
+                        help="with --browser: only this notebook (repeatable)")
     parser.add_argument("--output", type=Path, default=HERE / "results.md")
     args = parser.parse_args(argv)
+    if args.browser:
+        return _browser(args)
     from course_lib.draw import configure_offscreen_vtk
 
     configure_offscreen_vtk()
@@ -75,8 +87,27 @@ def main(argv=None):
         "redraw happens when the student turns a 3D view or the figure is first shown.",
         _table(widgets, WIDGET_COLUMNS),
     ]) + "\n"
+    old = args.output.read_text() if args.output.exists() else ""
+    kept = old[old.index(browser.SECTION):] if browser.SECTION in old else ""
     print(text)
-    args.output.write_text(text)
+    args.output.write_text(browser.with_section(text, kept))
+    return 0
+
+
+def _machine(quick):
+    return (f"{datetime.date.today()}, {platform.machine()} with {os.cpu_count()} cores"
+            + (" (quick run: fewer samples)" if quick else ""))
+
+
+def _browser(args):
+    rows, lessons = browser.run(args.quick, args.lesson)
+    section = browser.report(rows, lessons, _machine(args.quick))
+    print(section)
+    if args.lesson:
+        print("(one lesson measured: results.md left as it is)")
+        return 0
+    old = args.output.read_text() if args.output.exists() else "# Benchmarks\n"
+    args.output.write_text(browser.with_section(old, section))
     return 0
 
 

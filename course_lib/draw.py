@@ -346,7 +346,9 @@ def setup_axes_3d(ax, radius=1.5, title=None, elev=22, azim=-60, box=True):
         circle = np.linspace(0, 2 * np.pi, 73)
         ax.plot(end * np.cos(circle), end * np.sin(circle), 0 * circle, color="0.85", lw=0.8)
     if title:
-        ax.set_title(title, fontsize=10)
+        # y given: matplotlib then skips placing the title clear of the axes at every draw,
+        # which for a 3D axes costs a sixth of a full redraw (its bounding box is projected)
+        ax.set_title(title, fontsize=10, y=1.0)
 
 
 def frame_3d(ax, length=1.0, **style):

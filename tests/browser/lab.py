@@ -35,8 +35,9 @@ def free_port():
 class LabServer:
     """A JupyterLab server on a free loopback port, with its own config and settings."""
 
-    def __init__(self, tmp, env=None):
+    def __init__(self, tmp, env=None, windowing="none"):
         self.tmp = Path(tmp)
+        self.windowing = windowing
         self.extra_env = dict(env or {})
         self.port = free_port()
         self.token = "course-test-token"
@@ -55,10 +56,12 @@ class LabServer:
         (settings / "notification.jupyterlab-settings").write_text(
             json.dumps({"fetchNews": "false", "checkForUpdates": False}))
         # render every cell: JupyterLab 4 virtualises long notebooks (cells out of view are not
-        # laid out, so their prompts and widgets cannot be read)
+        # laid out, so their prompts and widgets cannot be read); the benchmarks keep
+        # JupyterLab's own default ("contentVisibility"), as a student has it
         tracker = self.tmp / "lab-settings" / "@jupyterlab" / "notebook-extension"
         tracker.mkdir(parents=True, exist_ok=True)
-        (tracker / "tracker.jupyterlab-settings").write_text(json.dumps({"windowingMode": "none"}))
+        (tracker / "tracker.jupyterlab-settings").write_text(
+            json.dumps({"windowingMode": self.windowing}))
         # never write the notebooks under test back to the repository
         docmanager = self.tmp / "lab-settings" / "@jupyterlab" / "docmanager-extension"
         docmanager.mkdir(parents=True, exist_ok=True)

@@ -1,0 +1,496 @@
+"""Where the student is: every explorer timed in JupyterLab in headless chromium.
+
+``python -m benchmarks --browser`` opens every lesson in JupyterLab (the browser tests' server
+and chromium set-up, :mod:`tests.browser.lab`), runs it, and for every explorer measures
+
+- **input -> frame**: from the input event (a slider's arrow key, one mouse move of a drag) to
+  the first animation frame after the explorer's canvas was painted with the new picture;
+  median and 90th percentile of single inputs given one at a time;
+- **frames per second** while a slider is dragged with the mouse, or a point or a 3D view is
+  dragged, continuously for two seconds (a mouse move every 16 ms), and how far the picture
+  is behind when the mouse stops (the last frame after the last move);
+- for every lesson, the time from opening it to every explorer live (Run All, every widget
+  view rendered and showing its first frame from the kernel).
+
+The single inputs are also followed through the whole path, so that the table says where a
+frame's time goes: the browser's handling of the input until the websocket message leaves, the
+trip to the kernel's subshell thread, the wait for the kernel's main thread, the work there
+(the explorer's update and the PNG encoding), the trip back, and the browser's decoding and
+painting. Browser times are ``performance.timeOrigin + performance.now()`` and kernel times
+``time.time()``: the same clock of the same machine, in milliseconds.
+"""
+import json
+import statistics
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+#: What the page records: inputs, websocket messages (their msg_id and parent's), frames.
+INIT_SCRIPT = r"""
+(() => {
+  const log = window.__bench = {inputs: [], sends: [], recvs: [], frames: []};
+  const now = () => performance.timeOrigin + performance.now();
+  const VIEW = '.jp-OutputArea-output > .jupyter-widgets';
+  const viewOf = (el) => {
+    const view = el.closest(VIEW);
+    return view ? [...document.querySelectorAll(VIEW)].indexOf(view) : -1;
+  };
+  document.addEventListener('keydown', () => log.inputs.push({t: now(), kind: 'key'}), true);
+  document.addEventListener('mousemove', (e) => {
+    if (e.buttons) log.inputs.push({t: now(), kind: 'move'});
+  }, true);
+  const shown = (view, drawn) => requestAnimationFrame(
+      () => log.frames.push({view, drawn, shown: now()}));
+  const drawImage = CanvasRenderingContext2D.prototype.drawImage;
+  CanvasRenderingContext2D.prototype.drawImage = function (...args) {
+    const result = drawImage.apply(this, args);
+    const canvas = this.canvas;
+    if (canvas && canvas.isConnected && canvas.parentElement &&
+        canvas.parentElement.classList.contains('jupyter-matplotlib-canvas-div')) {
+      shown(viewOf(canvas), now());
+    }
+    return result;
+  };
+  new MutationObserver((records) => {
+    for (const r of records) {
+      const img = r.target;
+      if (img.tagName === 'IMG' && img.classList.contains('widget-image') && img.isConnected) {
+        const view = viewOf(img);
+        img.decode().then(() => shown(view, now())).catch(() => {});
+      }
+    }
+  }).observe(document, {subtree: true, attributes: true, attributeFilter: ['src']});
+  // the kernel websocket (protocol v1.kernel.websocket.jupyter.org: binary messages, offsets
+  // then channel, header, parent header, metadata, content, buffers)
+  const decoder = new TextDecoder();
+  const parts = (data) => {
+    try {
+      const view = new DataView(data);
+      const n = Number(view.getBigUint64(0, true));
+      const offsets = [];
+      for (let k = 0; k < n; k++) offsets.push(Number(view.getBigUint64(8 * (k + 1), true)));
+      const part = (k) => decoder.decode(new Uint8Array(data, offsets[k], offsets[k + 1] - offsets[k]));
+      return {channel: part(0), header: JSON.parse(part(1)), parent: JSON.parse(part(2)),
+              buffers: Math.max(0, n - 5)};
+    } catch (e) { return null; }
+  };
+  const NativeWebSocket = window.WebSocket;
+  const send = NativeWebSocket.prototype.send;
+  NativeWebSocket.prototype.send = function (data) {
+    const t = now();
+    if (data instanceof ArrayBuffer) {
+      const p = parts(data);
+      if (p && p.header.msg_type === 'comm_msg') log.sends.push({t, id: p.header.msg_id});
+    }
+    return send.call(this, data);
+  };
+  class TracedWebSocket extends NativeWebSocket {
+    constructor(...args) {
+      super(...args);
+      this.addEventListener('message', (event) => {
+        const t = now();
+        if (event.data instanceof ArrayBuffer) {
+          const p = parts(event.data);
+          if (p && p.header.msg_type === 'comm_msg' && p.buffers > 0)
+            log.recvs.push({t, parent: p.parent.msg_id, bytes: event.data.byteLength});
+        }
+      });
+    }
+  }
+  window.WebSocket = TracedWebSocket;
+})();
+"""
+
+#: What the kernel records: when each comm message reached the subshell, when the main thread
+#: started and ended handling it, and when each frame was encoded and sent (by parent msg_id).
+KERNEL_PROBE = r"""
+import time as _t
+from ipywidgets.widgets.widget import _instances as _widgets
+from ipympl.backend_nbagg import Canvas as _Canvas
+_bench = {"arrive": {}, "start": {}, "end": {}, "encode": [], "sent": []}
+_bench_current = [None]
+def _trace(event, msg_id):
+    _bench[event].setdefault(msg_id, _t.time() * 1000)
+    _bench_current[0] = msg_id if event == "start" else None
+get_ipython().kernel.shell_handlers["comm_msg"].trace = _trace
+for _c in list(_widgets.values()):
+    if isinstance(_c, _Canvas) and not hasattr(_c, "_bench_wrapped"):
+        _c._bench_wrapped = True
+        def _encode(*a, _diff=_c.get_diff_image, **kw):
+            t0 = _t.time() * 1000
+            out = _diff(*a, **kw)
+            _bench["encode"].append((_bench_current[0], t0, _t.time() * 1000))
+            return out
+        _c.get_diff_image = _encode
+        def _sent(data, _send=_c.send_binary):
+            _bench["sent"].append((_bench_current[0], _t.time() * 1000))
+            return _send(data)
+        _c.send_binary = _sent
+print("ok")
+"""
+
+
+def _percentile(values, q):
+    values = sorted(values)
+    if not values:
+        return float("nan")
+    k = (len(values) - 1) * q
+    lo, hi = int(k), min(int(k) + 1, len(values) - 1)
+    return values[lo] + (values[hi] - values[lo]) * (k - lo)
+
+
+class Bench:
+    """One lesson open in the browser, with the page's and the kernel's records."""
+
+    def __init__(self, notebook, kernel):
+        self.notebook, self.kernel, self.page = notebook, kernel, notebook.page
+
+    def log(self):
+        return self.page.evaluate("() => window.__bench")
+
+    def frames(self, view):
+        return self.page.evaluate("(v) => window.__bench.frames.filter(f => f.view === v)", view)
+
+    def frame_count(self, view):
+        return self.page.evaluate(
+            "(v) => window.__bench.frames.filter(f => f.view === v).length", view)
+
+    def wait_quiet(self, view, quiet=0.25, timeout=5.0):
+        """Until the view has shown no new frame for `quiet` seconds."""
+        deadline = time.monotonic() + timeout
+        count, since = self.frame_count(view), time.monotonic()
+        while time.monotonic() < deadline:
+            time.sleep(0.05)
+            now = self.frame_count(view)
+            if now != count:
+                count, since = now, time.monotonic()
+            elif time.monotonic() - since >= quiet:
+                return
+
+    def single(self, view, act, samples):
+        """Latency of `samples` single inputs: ``act(k)`` gives input number k; the first frame
+        the view shows after it ends the sample. Returns the samples (dicts of times)."""
+        out = []
+        for k in range(samples):
+            self.wait_quiet(view)
+            before = self.frame_count(view)
+            inputs_before = self.page.evaluate("() => window.__bench.inputs.length")
+            act(k)
+            try:
+                self.page.wait_for_function(
+                    "([v, n]) => window.__bench.frames.filter(f => f.view === v).length > n",
+                    arg=[view, before], timeout=3000)
+            except Exception:            # no frame: the input changed nothing (at a limit)
+                continue
+            log = self.log()
+            inputs = log["inputs"][inputs_before:]
+            frame = [f for f in log["frames"] if f["view"] == view][before]
+            if not inputs:
+                continue
+            t_in = inputs[-1]["t"] if len(inputs) == 1 else inputs[0]["t"]
+            sends = [s for s in log["sends"] if s["t"] >= t_in - 1 and s["t"] <= frame["shown"]]
+            recvs = [r for r in log["recvs"] if r["t"] >= t_in and r["t"] <= frame["drawn"]]
+            out.append({"input": t_in, "drawn": frame["drawn"], "shown": frame["shown"],
+                        "send": sends[0] if sends else None,
+                        "recv": recvs[-1] if recvs else None})
+        return out
+
+    def continuous(self, view, start, path, seconds=2.0, interval=0.016):
+        """Mouse down at `start`, moves along ``path(fraction)`` for `seconds` (one move per
+        `interval`), mouse up. Returns (frames per second, behind at release in ms, moves)."""
+        mouse = self.page.mouse
+        self.wait_quiet(view)
+        mouse.move(*start)
+        mouse.down()
+        time.sleep(0.3)
+        self.wait_quiet(view, quiet=0.2)
+        t0 = self.page.evaluate("() => performance.timeOrigin + performance.now()")
+        began = time.monotonic()
+        moves = 0
+        while time.monotonic() - began < seconds:
+            fraction = (time.monotonic() - began) / seconds
+            mouse.move(*path(fraction))
+            moves += 1
+            time.sleep(max(0.0, interval - 0.002))
+        t1 = self.page.evaluate("() => performance.timeOrigin + performance.now()")
+        self.wait_quiet(view, quiet=0.5, timeout=8)
+        mouse.up()
+        frames = [f["shown"] for f in self.frames(view)]
+        during = [t for t in frames if t0 < t <= t1]
+        after = [t for t in frames if t > t1]
+        behind = (max(after) - t1) if after else 0.0
+        self.wait_quiet(view)
+        return len(during) / ((t1 - t0) / 1000), behind, moves
+
+
+def _slider_gestures(view_locator, slider_index):
+    handle = view_locator.locator(".widget-slider").nth(slider_index).locator(".noUi-handle").first
+    return handle
+
+
+def _breakdown(samples, kernel_log):
+    """Median milliseconds of each stage of a frame's path, over the samples that could be
+    followed from the input to the frame (the frame's message names the input's message as its
+    parent, or the newer one it was merged into)."""
+    stages = {"input -> message sent": [], "to the kernel (subshell)": [],
+              "wait for the main thread": [], "update (before encoding)": [],
+              "PNG encode": [], "back to the browser": [], "decode + draw": [],
+              "until painted": []}
+    arrive, start = kernel_log["arrive"], kernel_log["start"]
+    encodes = sorted((t0, t1) for _, t0, t1 in kernel_log["encode"])
+    sents = sorted(t for _, t in kernel_log["sent"])
+    for s in samples:
+        if s["send"] is None or s["recv"] is None:
+            continue
+        parent, own = s["recv"]["parent"], s["send"]["id"]
+        if parent not in start or own not in arrive:
+            continue
+        encode = next(((t0, t1) for t0, t1 in encodes if t0 >= start[parent]), None)
+        if encode is None or encode[1] > s["recv"]["t"]:
+            continue
+        sent = next((t for t in sents if t >= encode[1]), encode[1])
+        stages["input -> message sent"].append(s["send"]["t"] - s["input"])
+        stages["to the kernel (subshell)"].append(arrive[own] - s["send"]["t"])
+        stages["wait for the main thread"].append(start[parent] - arrive[own])
+        stages["update (before encoding)"].append(encode[0] - start[parent])
+        stages["PNG encode"].append(encode[1] - encode[0])
+        stages["back to the browser"].append(s["recv"]["t"] - sent)
+        stages["decode + draw"].append(s["drawn"] - s["recv"]["t"])
+        stages["until painted"].append(s["shown"] - s["drawn"])
+    return {name: (statistics.median(v) if v else None) for name, v in stages.items()}
+
+
+PROBE = """
+import json
+from course_lib.widgets._base import Explorer
+print(json.dumps([{"class": type(Out.get(n)).__name__,
+                   "gestures": Out[n].mouse_gestures() if isinstance(Out.get(n), Explorer)
+                   else []} for n in COUNTS]))
+"""
+
+
+def measure_lesson(browser, server, path, samples, seconds, only=None):
+    """Rows of one lesson (one per explorer control measured) and its time to live."""
+    from tests.browser.lab import (WIDGET_VIEW, NotebookPage, PageKernel,
+                                   cell_execution_counts, expected_widget_cells)
+
+    notebook = NotebookPage(browser, server, path)
+    page = notebook.page
+    page.add_init_script(INIT_SCRIPT)
+    expected = len(expected_widget_cells(path))
+    began = time.monotonic()
+    notebook.open()
+    opened = time.monotonic()
+    notebook.menu("Edit", "Clear Outputs of All Cells")
+    page.wait_for_function("() => !document.querySelector('.jp-OutputArea-output')",
+                           timeout=30_000)
+    run_began = time.monotonic()
+    notebook.menu("Run", "Run All Cells")
+    deadline = time.monotonic() + 300
+    while time.monotonic() < deadline:
+        live = page.evaluate(
+            """(sel) => { const views = [...document.querySelectorAll(sel)];
+                 const shown = new Set(window.__bench.frames.map(f => f.view));
+                 return views.map((v, k) => !v.querySelector('canvas, img.widget-image')
+                                            || shown.has(k)); }""", WIDGET_VIEW)
+        if len(live) >= expected and all(live):
+            break
+        time.sleep(0.1)
+    live_at = time.monotonic()
+    notebook.page.wait_for_selector(".jp-Notebook-ExecutionIndicator[data-status='idle']",
+                                    timeout=300_000)
+    lesson = {"lesson": Path(path).stem, "explorers": expected,
+              "kernel_s": opened - began, "run_all_s": live_at - run_began,
+              "open_to_live_s": live_at - began}
+    rows = []
+    if not expected:
+        notebook.close()
+        return rows, lesson
+    time.sleep(1.0)
+    kernel = PageKernel(server, path)
+    try:
+        counts = cell_execution_counts(notebook)
+        explorers = json.loads(kernel.run(PROBE.replace("COUNTS", repr(counts))).strip()
+                               .splitlines()[-1])
+        kernel.run(KERNEL_PROBE)
+        bench = Bench(notebook, kernel)
+        views = page.locator(WIDGET_VIEW)
+        for k, explorer in enumerate(explorers):
+            if only is not None and explorer["class"] not in only:
+                continue
+            view = views.nth(k)
+            view.scroll_into_view_if_needed()
+            time.sleep(0.3)
+            rows += measure_explorer(bench, k, view, explorer, samples, seconds)
+            page.mouse.move(1, 1)
+    finally:
+        kernel.close()
+        notebook.close()
+    return rows, lesson
+
+
+def measure_explorer(bench, k, view, explorer, samples, seconds):
+    name = explorer["class"]
+    page = bench.page
+    rows = []
+    sliders = view.locator(".widget-slider")
+    chosen = None
+    for s in range(sliders.count()):
+        handle = sliders.nth(s).locator(".noUi-handle").first
+        disabled = sliders.nth(s).locator(".noUi-target[disabled]").count() > 0
+        if handle.count() and handle.is_visible() and not disabled:
+            chosen = s
+            break
+    if chosen is not None:
+        slider = sliders.nth(chosen)
+        label = slider.locator(".widget-label").first.inner_text().strip()
+        handle = slider.locator(".noUi-handle").first
+        low, now, high = (float(handle.get_attribute(f"aria-value{end}"))
+                          for end in ("min", "now", "max"))
+        up, down = ("ArrowRight", "ArrowLeft") if high - now >= now - low else \
+            ("ArrowLeft", "ArrowRight")
+        handle.focus()
+
+        def press(i):
+            page.keyboard.press(up if i % 2 == 0 else down)
+        got = bench.single(k, press, samples)
+        track = slider.locator(".noUi-target").first.bounding_box()
+        box = handle.bounding_box()
+        x0, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+        span = 0.3 * track["width"]
+        direction = 1 if high - now >= now - low else -1
+
+        def along(f):                     # out and back twice
+            phase = (2 * f) % 1.0
+            return (x0 + direction * span * (1 - abs(2 * phase - 1)), y)
+        fps, behind, moves = bench.continuous(k, (x0, y), along, seconds)
+        rows.append(_row(name, f"slider '{label}'", got, fps, behind, moves,
+                         bench.kernel.json("import json; print(json.dumps(_bench))")))
+    canvas = view.locator(".jupyter-matplotlib-canvas-div canvas").last
+    for gesture in explorer["gestures"]:
+        if gesture["kind"] == "click":
+            continue
+        box = canvas.bounding_box()
+        at = lambda fx, fy: (box["x"] + fx * box["width"], box["y"] + fy * box["height"])
+        (sx, sy), (ex, ey) = at(*gesture["start"]), at(*gesture["end"])
+        mouse = page.mouse
+        mouse.move(sx, sy)
+        mouse.down()
+        bench.wait_quiet(k)
+        steps = max(samples, 2)
+
+        def step(i):
+            f = (i + 1) / steps
+            mouse.move(sx + (ex - sx) * f, sy + (ey - sy) * f)
+        got = bench.single(k, step, samples)
+        mouse.up()
+        bench.wait_quiet(k)
+
+        # the point now lies at the end of the gesture: drag it back and forth from there
+        def along(f):
+            phase = 1 - abs(2 * ((2 * f) % 1.0) - 1)
+            return (ex + (sx - ex) * phase, ey + (sy - ey) * phase)
+        fps, behind, moves = bench.continuous(k, (ex, ey), along, seconds)
+        rows.append(_row(name, f"{gesture['kind']} {gesture['what']}", got, fps, behind, moves,
+                         bench.kernel.json("import json; print(json.dumps(_bench))")))
+    return rows
+
+
+def _row(name, what, samples, fps, behind, moves, kernel_log):
+    latency = [s["shown"] - s["input"] for s in samples]
+    return {"explorer": name, "input": what, "samples": len(latency),
+            "median_ms": statistics.median(latency) if latency else float("nan"),
+            "p90_ms": _percentile(latency, 0.9), "fps": fps, "behind_ms": behind,
+            "moves": moves, "breakdown": _breakdown(samples, kernel_log)}
+
+
+def run(quick=False, notebooks=None, only=None):
+    """Measure every lesson (or the given notebook paths; only the explorer classes named in
+    `only`, if given); returns (rows, lessons)."""
+    from playwright.sync_api import sync_playwright
+
+    from tests.browser.lab import LabServer, launch_browser
+
+    paths = notebooks or sorted(p.relative_to(ROOT).as_posix()
+                                for p in (ROOT / "notebooks").glob("*.ipynb"))
+    samples, seconds = (5, 1.0) if quick else (15, 2.0)
+    rows, lessons = [], []
+    with tempfile.TemporaryDirectory() as tmp:
+        (Path(tmp) / "lab").mkdir()
+        server = LabServer(Path(tmp) / "lab", windowing="contentVisibility").start()
+        try:
+            with sync_playwright() as playwright:
+                context = launch_browser(playwright, Path(tmp) / "profile")
+                try:
+                    for path in paths:
+                        got, lesson = measure_lesson(context, server, path, samples, seconds, only)
+                        rows += got
+                        lessons.append(lesson)
+                        print(f"{lesson['lesson']}: live in {lesson['open_to_live_s']:.1f} s; "
+                              + "; ".join(f"{r['explorer']} {r['input']}: "
+                                          f"{r['median_ms']:.0f} ms, {r['fps']:.0f} fps"
+                                          for r in got), flush=True)
+                finally:
+                    context.close()
+        finally:
+            server.stop()
+    return rows, lessons
+
+
+TARGET_MS, TARGET_FPS = 30, 30
+SECTION = "## In the browser"
+
+
+def _ms(value):
+    return "–" if value is None or value != value else f"{value:.0f}"
+
+
+def report(rows, lessons, machine):
+    """The Markdown section of results.md for the browser measurements."""
+    met = [r for r in rows if r["median_ms"] <= TARGET_MS and r["fps"] >= TARGET_FPS]
+    lines = [
+        SECTION, "",
+        f"Measured by `python -m benchmarks --browser` on {machine}: JupyterLab with its default "
+        "settings in headless chromium (software rendering, 1400 x 1000), every lesson run, "
+        "every explorer driven with the keyboard and the mouse as a student does. Input -> "
+        "frame: from the key press or mouse move to the first animation frame after the "
+        "explorer's canvas was painted with the answer (single inputs, one at a time). "
+        "Continuous: a slider handle dragged with the mouse, or a point or a 3D view dragged, "
+        "for two seconds with a mouse move every 16 ms; behind = how long the picture kept "
+        f"changing after the mouse stopped. Targets: median <= {TARGET_MS} ms and >= "
+        f"{TARGET_FPS} fps; {len(met)} of {len(rows)} rows meet both.", "",
+        "| explorer | input | input -> frame median (ms) | 90th pct (ms) | continuous (fps) "
+        "| behind at release (ms) | targets met |",
+        "|---|---|---:|---:|---:|---:|---|",
+    ]
+    for r in rows:
+        ok = r["median_ms"] <= TARGET_MS and r["fps"] >= TARGET_FPS
+        lines.append(f"| {r['explorer']} | {r['input']} | {_ms(r['median_ms'])} | "
+                     f"{_ms(r['p90_ms'])} | {r['fps']:.0f} | {_ms(r['behind_ms'])} | "
+                     f"{'yes' if ok else 'no'} |")
+    stages = list(rows[0]["breakdown"]) if rows else []
+    lines += ["", "### Where a frame's time goes", "",
+              "Medians (ms) of the single inputs above, followed through the page's websocket "
+              "and the kernel: browser clock and kernel clock are the same machine's.", "",
+              "| explorer | input | " + " | ".join(stages) + " |",
+              "|---|---|" + "---:|" * len(stages)]
+    for r in rows:
+        lines.append(f"| {r['explorer']} | {r['input']} | "
+                     + " | ".join(_ms(r["breakdown"][s]) for s in stages) + " |")
+    lines += ["", "### Opening a lesson", "",
+              "From opening the notebook to its kernel ready, then from Run All to every "
+              "explorer showing its first frame from the kernel.", "",
+              "| lesson | explorers | kernel ready (s) | Run All -> all live (s) "
+              "| open -> all live (s) |", "|---|---:|---:|---:|---:|"]
+    for lesson in lessons:
+        lines.append(f"| {lesson['lesson']} | {lesson['explorers']} | {lesson['kernel_s']:.1f} "
+                     f"| {lesson['run_all_s']:.1f} | {lesson['open_to_live_s']:.1f} |")
+    return "\n".join(lines) + "\n"
+
+
+def with_section(text, section):
+    """`text` (results.md) with its browser section replaced by `section` (or added)."""
+    head = text.split(SECTION)[0].rstrip("\n")
+    return head + "\n\n" + section if section else head + "\n"

@@ -1,0 +1,26 @@
+"""The browser benchmark works (one explorer, few samples): it must not rot between real
+measurements. Behaviour only, no timing: every input reached a frame, the frame could be
+followed back through the kernel to its input, and the report has its three tables."""
+import math
+
+from benchmarks import browser
+
+
+def test_the_browser_benchmark_follows_inputs_to_frames():
+    rows, lessons = browser.run(quick=True, notebooks=["notebooks/ch05_culling_hse.ipynb"],
+                                only={"CohenSutherlandExplorer"})
+    assert [r["input"].split()[0] for r in rows] == ["slider", "drag"], rows
+    for row in rows:
+        assert row["samples"] >= 3, f"{row['input']}: most single inputs gave no frame"
+        assert 0 < row["median_ms"] <= row["p90_ms"] < 5000
+        assert row["fps"] > 0 and row["moves"] > 10, row
+        # every stage of the path was seen, and the stages add up to no more than the whole
+        stages = row["breakdown"]
+        assert all(v is not None and v > -2 for v in stages.values()), stages
+        assert sum(stages.values()) <= 1.5 * row["p90_ms"] + 5, (stages, row["p90_ms"])
+    (lesson,) = lessons
+    assert lesson["explorers"] == 6 and 0 < lesson["kernel_s"] < lesson["open_to_live_s"]
+    text = browser.report(rows, lessons, "test")
+    assert text.count("\n| CohenSutherlandExplorer |") == 4        # two rows, two tables
+    assert "| ch05_culling_hse | 6 |" in text
+    assert not any(math.isnan(r["median_ms"]) for r in rows)
