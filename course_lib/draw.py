@@ -178,100 +178,11 @@ def figure(figsize=(4.5, 4.5), dpi=90, **kwargs):
                         ("toolbar_position", "left"), ("resizable", False)):
         if hasattr(canvas, name):
             setattr(canvas, name, value)
-    if hasattr(canvas, "syncing_data_url"):
-        # ipympl 0.10 keeps a copy of each frame in the widget state until the browser says it
-        # is ready, but stores it without the "data:image/png;base64," prefix: a frame drawn in
-        # that window reaches the browser as a broken image (a console error). The explorers
-        # carry their own picture for readers without a kernel, so the copy is not needed.
-        canvas.syncing_data_url = False
-    if hasattr(canvas, "get_diff_image"):
-        canvas.get_diff_image = _whole_frames(canvas)
-    if hasattr(canvas, "pan_zoom_throttle"):
-        # ipympl's front end sends at most one mouse move per this many ms (33 by default,
-        # which caps a drag at 30 frames per second); the kernel merges the moves it cannot
-        # keep up with (course_lib.widgets._base._on_main_thread)
-        canvas.pan_zoom_throttle = 15
-    if hasattr(canvas, "on_msg") and hasattr(canvas, "draw_idle"):
-        _push_frames(canvas)
+    if hasattr(canvas, "get_diff_image"):          # an ipympl canvas: the live path of frames
+        from ._canvas import fast_frames
+
+        fast_frames(canvas)
     return fig
-
-
-def _kernel_loop():
-    """The running IPython kernel's event loop, or None outside a kernel."""
-    kernel_module = sys.modules.get("ipykernel.kernelbase")
-    if kernel_module is None or not kernel_module.Kernel.initialized():
-        return None
-    return getattr(kernel_module.Kernel.instance(), "io_loop", None)
-
-
-def _push_frames(canvas):
-    """Make ``canvas.draw_idle()`` draw the figure and send the frame itself, once the
-    message being handled is done, instead of asking the browser to ask for it.
-
-    matplotlib's web canvas answers ``draw_idle`` by sending the browser a "draw" event; the
-    browser replies with a draw request and only then does the kernel render and send the PNG:
-    a round trip per frame, paid by every full redraw (a 3D view turned with the mouse, an
-    explorer that changes its axes). Here the draw is queued on the kernel's event loop behind
-    the messages already waiting, so several ``draw_idle`` calls (and several merged inputs)
-    give one frame. Until the browser has shown the canvas (its "initialized" message), and
-    outside a kernel, ``draw_idle`` is left as it was."""
-    draw_idle = canvas.draw_idle
-    canvas._course_shown = False
-    canvas._course_draw_queued = False
-
-    def seen(widget, content, buffers):
-        if isinstance(content, dict) and content.get("type") == "initialized":
-            canvas._course_shown = True
-
-    def draw_now():
-        canvas._course_draw_queued = False
-        canvas.draw()
-
-    def push():
-        loop = _kernel_loop()
-        if loop is None or not canvas._course_shown:
-            return draw_idle()
-        if not canvas._course_draw_queued:
-            canvas._course_draw_queued = True
-            loop.add_callback(draw_now)
-        return None
-
-    canvas.on_msg(seen)
-    canvas.draw_idle = push
-
-
-def _whole_frames(canvas):
-    """`get_diff_image` for an ipympl canvas: every frame whole, opaque, its PNG at zlib level 1.
-
-    **Whole frames.** matplotlib's web canvas normally sends only the pixels that changed since
-    the previous frame, and the browser paints them over what it shows. But ipympl's front end
-    (0.10) drops a frame whenever the next one arrives before it has finished decoding (it sets
-    the image's source again): a slider moved quickly sends frames a few milliseconds apart,
-    and each dropped difference leaves stale pixels on the student's screen for good (measured
-    in JupyterLab: a slider moved and moved back did not give the first picture back). A whole
-    frame repaints everything, so a dropped one is simply skipped.
-
-    **Cheap to encode.** Encoding is the largest single cost of a blitted update. The figures
-    are opaque (a white background), so the frame is sent as RGB without the alpha channel,
-    at zlib level 1 instead of PIL's default 6: for the 737 x 351 slerp figure 6.9 ms and 40 kB
-    against 16.8 ms and 41 kB (process time, measured 2026-12-02)."""
-    from io import BytesIO
-
-    from PIL import Image
-
-    def whole():
-        if not canvas._png_is_old:
-            return None
-        canvas.set_image_mode("full")
-        canvas._png_is_old = False
-        pixels = np.asarray(canvas.get_renderer().buffer_rgba())
-        if pixels[..., 3].min() == 255:
-            pixels = pixels[..., :3]
-        with BytesIO() as png:
-            Image.fromarray(np.ascontiguousarray(pixels)).save(png, format="png",
-                                                              compress_level=1)
-            return png.getvalue()
-    return whole
 
 
 def setup_axes_2d(ax, limits, title=None, grid=True):

@@ -1,0 +1,229 @@
+"""The live path of an explorer's frames, from the kernel to the student's screen.
+
+:func:`course_lib.draw.figure` hands every ipympl canvas to :func:`fast_frames`, which changes
+four things of ipympl 0.10 / matplotlib's web canvas, each measured in JupyterLab
+(``python -m benchmarks --browser``, benchmarks/results.md):
+
+- **frames pushed** (:func:`_push_frames`): ``draw_idle`` draws and sends the frame itself,
+  once the message being handled is done, instead of asking the browser to ask for it;
+- **whole, cheap frames** (:func:`_whole_frames`): every frame whole (ipympl drops frames, and a
+  dropped difference would leave stale pixels), opaque RGB at zlib level 1;
+- **more mouse moves**: one per 15 ms instead of 33 (ipympl's ``pan_zoom_throttle``), the
+  kernel merging what it cannot keep up with (:mod:`course_lib.widgets._base`);
+- **decoded off the main thread** (:func:`frame_decoder`): ipympl's front end encodes every
+  frame it receives back into a PNG data URL on the browser's main thread
+  (``canvas.toDataURL()``, 12-28 ms for a 737 x 351 figure) and decodes it through an
+  ``<img>``; a small front-end module replaces that handler with ``createImageBitmap`` (decoded
+  off the main thread) and keeps frames in order.
+
+Only the explorers' figures are changed; a figure a student makes with ``%matplotlib widget``
+keeps ipympl's own path, except for the front-end handler, which is ipympl's for every canvas
+of the page once an explorer has been shown.
+"""
+import sys
+
+import numpy as np
+
+__all__ = ["fast_frames", "frame_decoder"]
+
+
+def fast_frames(canvas):
+    """Set up `canvas` (an ipympl ``Canvas``) for the explorers: hidden header and footer, the
+    toolbar on the left, and the four changes of this module.
+
+    Examples
+    --------
+    >>> from course_lib import draw
+    >>> canvas = draw.figure(figsize=(2, 2)).canvas      # fast_frames has run on it
+    >>> type(canvas).__name__ in ("Canvas", "FigureCanvasAgg")
+    True
+    """
+    for name, value in (("header_visible", False), ("footer_visible", False),
+                        ("toolbar_position", "left"), ("resizable", False)):
+        if hasattr(canvas, name):
+            setattr(canvas, name, value)
+    if hasattr(canvas, "syncing_data_url"):
+        # ipympl 0.10 keeps a copy of each frame in the widget state until the browser says it
+        # is ready, but stores it without the "data:image/png;base64," prefix: a frame drawn in
+        # that window reaches the browser as a broken image (a console error). The explorers
+        # carry their own picture for readers without a kernel, so the copy is not needed.
+        canvas.syncing_data_url = False
+    if hasattr(canvas, "get_diff_image"):
+        canvas.get_diff_image = _whole_frames(canvas)
+    if hasattr(canvas, "pan_zoom_throttle"):
+        canvas.pan_zoom_throttle = 15
+    if hasattr(canvas, "on_msg") and hasattr(canvas, "draw_idle"):
+        _push_frames(canvas)
+        decoder = _frame_decoder(canvas)
+        if decoder is not None:
+            canvas._course_frame_decoder = decoder      # lives as long as the canvas
+
+
+def _kernel_loop():
+    """The running IPython kernel's event loop, or None outside a kernel."""
+    kernel_module = sys.modules.get("ipykernel.kernelbase")
+    if kernel_module is None or not kernel_module.Kernel.initialized():
+        return None
+    return getattr(kernel_module.Kernel.instance(), "io_loop", None)
+
+
+def _push_frames(canvas):
+    """Make ``canvas.draw_idle()`` draw the figure and send the frame itself, once the
+    message being handled is done, instead of asking the browser to ask for it.
+
+    matplotlib's web canvas answers ``draw_idle`` by sending the browser a "draw" event; the
+    browser replies with a draw request and only then does the kernel render and send the PNG:
+    a round trip per frame, paid by every full redraw (a 3D view turned with the mouse, an
+    explorer that changes its axes). Here the draw is queued on the kernel's event loop behind
+    the messages already waiting, so several ``draw_idle`` calls (and several merged inputs)
+    give one frame. Until the browser has shown the canvas (its "initialized" message), and
+    outside a kernel, ``draw_idle`` is left as it was."""
+    draw_idle = canvas.draw_idle
+    canvas._course_shown = False
+    canvas._course_draw_queued = False
+
+    def seen(widget, content, buffers):
+        if isinstance(content, dict) and content.get("type") == "initialized":
+            canvas._course_shown = True
+
+    def draw_now():
+        canvas._course_draw_queued = False
+        canvas.draw()
+
+    def push():
+        loop = _kernel_loop()
+        if loop is None or not canvas._course_shown:
+            return draw_idle()
+        if not canvas._course_draw_queued:
+            canvas._course_draw_queued = True
+            loop.add_callback(draw_now)
+        return None
+
+    canvas.on_msg(seen)
+    canvas.draw_idle = push
+
+
+def _whole_frames(canvas):
+    """`get_diff_image` for an ipympl canvas: every frame whole, opaque, its PNG at zlib level 1.
+
+    **Whole frames.** matplotlib's web canvas normally sends only the pixels that changed since
+    the previous frame, and the browser paints them over what it shows. But ipympl's front end
+    (0.10) drops a frame whenever the next one arrives before it has finished decoding (it sets
+    the image's source again): a slider moved quickly sends frames a few milliseconds apart,
+    and each dropped difference leaves stale pixels on the student's screen for good (measured
+    in JupyterLab: a slider moved and moved back did not give the first picture back). A whole
+    frame repaints everything, so a dropped one is simply skipped.
+
+    **Cheap to encode.** Encoding is the largest single cost of a blitted update. The figures
+    are opaque (a white background), so the frame is sent as RGB without the alpha channel,
+    at zlib level 1 instead of PIL's default 6: for the 737 x 351 slerp figure 6.9 ms and 40 kB
+    against 16.8 ms and 41 kB (process time, measured 2026-12-02)."""
+    from io import BytesIO
+
+    from PIL import Image
+
+    def whole():
+        if not canvas._png_is_old:
+            return None
+        canvas.set_image_mode("full")
+        canvas._png_is_old = False
+        pixels = np.asarray(canvas.get_renderer().buffer_rgba())
+        if pixels[..., 3].min() == 255:
+            pixels = pixels[..., :3]
+        with BytesIO() as png:
+            Image.fromarray(np.ascontiguousarray(pixels)).save(png, format="png",
+                                                              compress_level=1)
+            return png.getvalue()
+    return whole
+
+
+#: The front-end module (ES module, run by anywidget in the page when the model is created):
+#: it replaces ipympl's handler of a received frame, once for every canvas of the page.
+_DECODER_ESM = r"""
+function patch(proto) {
+  if (proto.__courseFrames) return;
+  proto.__courseFrames = true;
+  proto.handle_binary = function (msg, buffers) {
+    const data = buffers[0];
+    const bytes = ArrayBuffer.isView(data) ? data : new Uint8Array(data);
+    const number = (this.__courseSent = (this.__courseSent || 0) + 1);
+    this.waiting_for_image = false;
+    createImageBitmap(new Blob([bytes], {type: 'image/png'})).then((bitmap) => {
+      // frames decode in parallel: never paint an older one over a newer one
+      if (number < (this.__courseShown || 0)) { bitmap.close(); return; }
+      this.__courseShown = number;
+      const context = this.offscreen_context;
+      if (this.get('_image_mode') === 'full') {
+        context.clearRect(0, 0, this.offscreen_canvas.width, this.offscreen_canvas.height);
+      }
+      context.drawImage(bitmap, 0, 0);
+      bitmap.close();
+      this._for_each_view((view) => view.update_canvas());
+    }).catch(() => {});
+  };
+}
+export default {
+  async initialize({ model }) {
+    const ref = model.get('canvas') || '';
+    const canvas = await model.widget_manager.get_model(ref.replace(/^IPY_MODEL_/, ''));
+    if (canvas && typeof canvas.handle_binary === 'function') patch(Object.getPrototypeOf(canvas));
+  },
+};
+"""
+
+
+def _frame_decoder(canvas):
+    """A :func:`frame_decoder` for `canvas`, or None where anywidget is not installed."""
+    try:
+        return frame_decoder(canvas)
+    except ImportError:                                  # pragma: no cover - a dependency
+        return None
+
+
+def frame_decoder(canvas):
+    """An invisible widget whose front end makes ipympl decode frames off the main thread.
+
+    ipympl's handler of a received frame (``handle_binary``) sets an ``<img>``'s source and,
+    on the browser's main thread, encodes the canvas it has just drawn back into a PNG data URL
+    (``toDataURL``, kept for saving the figure from its toolbar). This widget's module (run in
+    the page by anywidget when the widget is created; it need not be displayed) replaces that
+    handler on the prototype of ipympl's canvas model: ``createImageBitmap`` decodes the frame
+    away from the main thread, a frame that finishes decoding after a newer one is dropped, and
+    nothing is encoded back. The toolbar's save button then saves an older picture; the
+    explorers' figures are saved by :meth:`course_lib.widgets._base.Explorer.png`.
+
+    Parameters
+    ----------
+    canvas : ipympl.backend_nbagg.Canvas
+
+    Returns
+    -------
+    anywidget.AnyWidget
+
+    Examples
+    --------
+    >>> from course_lib import draw
+    >>> canvas = draw.figure(figsize=(2, 2)).canvas
+    >>> frame_decoder(canvas).canvas is canvas
+    True
+    """
+    return _decoder_class()(canvas=canvas)
+
+
+_DECODER_CLASS = None
+
+
+def _decoder_class():
+    global _DECODER_CLASS
+    if _DECODER_CLASS is None:
+        import anywidget
+        import traitlets
+        from ipywidgets import widget_serialization
+        from ipympl.backend_nbagg import Canvas
+
+        class _FrameDecoder(anywidget.AnyWidget):
+            _esm = _DECODER_ESM
+            canvas = traitlets.Instance(Canvas).tag(sync=True, **widget_serialization)
+
+        _DECODER_CLASS = _FrameDecoder
+    return _DECODER_CLASS
