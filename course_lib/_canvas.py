@@ -54,6 +54,7 @@ def fast_frames(canvas):
         canvas.pan_zoom_throttle = 15
     if hasattr(canvas, "on_msg") and hasattr(canvas, "draw_idle"):
         _push_frames(canvas)
+        _placed_frames(canvas)
         decoder = _frame_decoder(canvas)
         if decoder is not None:
             canvas._course_frame_decoder = decoder      # lives as long as the canvas
@@ -85,6 +86,9 @@ def _push_frames(canvas):
     def seen(widget, content, buffers):
         if isinstance(content, dict) and content.get("type") == "initialized":
             canvas._course_shown = True
+            # a new page: whole frames until its frame decoder says it is ready
+            canvas._course_regions = False
+            canvas._course_last = None
 
     def draw_now():
         canvas._course_draw_queued = False
@@ -104,37 +108,71 @@ def _push_frames(canvas):
 
 
 def _whole_frames(canvas):
-    """`get_diff_image` for an ipympl canvas: every frame whole, opaque, its PNG at zlib level 1.
+    """`get_diff_image` for an ipympl canvas: whole frames or, where the page can place them,
+    the changed rectangle only; opaque RGB at zlib level 1.
 
-    **Whole frames.** matplotlib's web canvas normally sends only the pixels that changed since
-    the previous frame, and the browser paints them over what it shows. But ipympl's front end
-    (0.10) drops a frame whenever the next one arrives before it has finished decoding (it sets
-    the image's source again): a slider moved quickly sends frames a few milliseconds apart,
-    and each dropped difference leaves stale pixels on the student's screen for good (measured
-    in JupyterLab: a slider moved and moved back did not give the first picture back). A whole
-    frame repaints everything, so a dropped one is simply skipped.
+    **No transparent differences.** matplotlib's web canvas normally sends a full-size frame
+    whose unchanged pixels are transparent, painted over what the browser shows. But ipympl's
+    front end (0.10) drops a frame whenever the next one arrives before it has finished
+    decoding: a slider moved quickly leaves stale pixels on the student's screen for good
+    (measured in JupyterLab: a slider moved and moved back did not give the first picture
+    back). So a frame is either whole, or, once the page's :func:`frame_decoder` has said that
+    it paints every frame in order at a given place (``canvas._course_regions``), the smallest
+    rectangle holding every pixel that changed since the frame sent before, with its place.
 
     **Cheap to encode.** Encoding is the largest single cost of a blitted update. The figures
     are opaque (a white background), so the frame is sent as RGB without the alpha channel,
     at zlib level 1 instead of PIL's default 6: for the 737 x 351 slerp figure 6.9 ms and 40 kB
-    against 16.8 ms and 41 kB (process time, measured 2026-12-02)."""
+    against 16.8 ms and 41 kB (process time, measured 2026-12-02); a slider that moves a small
+    part of a figure sends a small rectangle."""
     from io import BytesIO
 
     from PIL import Image
 
-    def whole():
+    canvas._course_regions = False
+    canvas._course_last = None
+    canvas._course_place = None
+
+    def frame():
         if not canvas._png_is_old:
             return None
         canvas.set_image_mode("full")
         canvas._png_is_old = False
         pixels = np.asarray(canvas.get_renderer().buffer_rgba())
+        last, canvas._course_last = canvas._course_last, pixels.copy()
+        canvas._course_place = None
+        if canvas._course_regions and last is not None and last.shape == pixels.shape:
+            changed = pixels.view(np.uint32)[..., 0] != last.view(np.uint32)[..., 0]
+            rows = np.flatnonzero(changed.any(axis=1))
+            if rows.size == 0:
+                return None                          # the same picture: nothing to send
+            cols = np.flatnonzero(changed.any(axis=0))
+            y0, y1, x0, x1 = rows[0], rows[-1] + 1, cols[0], cols[-1] + 1
+            pixels = pixels[y0:y1, x0:x1]
+            canvas._course_place = (int(x0), int(y0))
         if pixels[..., 3].min() == 255:
             pixels = pixels[..., :3]
         with BytesIO() as png:
             Image.fromarray(np.ascontiguousarray(pixels)).save(png, format="png",
                                                               compress_level=1)
             return png.getvalue()
-    return whole
+    return frame
+
+
+def _placed_frames(canvas):
+    """Send a rectangle made by :func:`_whole_frames` with its place (ipympl's "binary"
+    message with ``x`` and ``y``, which only the :func:`frame_decoder`'s handler reads)."""
+    import json
+
+    send_binary = canvas.send_binary
+
+    def send(data):
+        place, canvas._course_place = canvas._course_place, None
+        if place is None:
+            return send_binary(data)
+        canvas.send({"data": json.dumps({"type": "binary", "x": place[0], "y": place[1]})},
+                    buffers=[data])
+    canvas.send_binary = send
 
 
 #: The front-end module (ES module, run by anywidget in the page when the model is created):
@@ -146,27 +184,33 @@ function patch(proto) {
   proto.handle_binary = function (msg, buffers) {
     const data = buffers[0];
     const bytes = ArrayBuffer.isView(data) ? data : new Uint8Array(data);
-    const number = (this.__courseSent = (this.__courseSent || 0) + 1);
     this.waiting_for_image = false;
-    createImageBitmap(new Blob([bytes], {type: 'image/png'})).then((bitmap) => {
-      // frames decode in parallel: never paint an older one over a newer one
-      if (number < (this.__courseShown || 0)) { bitmap.close(); return; }
-      this.__courseShown = number;
-      const context = this.offscreen_context;
-      if (this.get('_image_mode') === 'full') {
-        context.clearRect(0, 0, this.offscreen_canvas.width, this.offscreen_canvas.height);
-      }
-      context.drawImage(bitmap, 0, 0);
-      bitmap.close();
-      this._for_each_view((view) => view.update_canvas());
-    }).catch(() => {});
+    if (this.image) this.image.onload = null;     // a frame of ipympl's own path arriving late
+    // decoded in parallel, away from the main thread; painted one after the other, in the
+    // order sent (a rectangle must land on the frame it was computed against)
+    const decoded = createImageBitmap(new Blob([bytes], {type: 'image/png'}));
+    this.__coursePainted = (this.__coursePainted || Promise.resolve()).then(() => decoded)
+      .then((bitmap) => {
+        const context = this.offscreen_context;
+        if (msg.x === undefined) {
+          context.clearRect(0, 0, this.offscreen_canvas.width, this.offscreen_canvas.height);
+          context.drawImage(bitmap, 0, 0);
+        } else {
+          context.drawImage(bitmap, msg.x, msg.y);
+        }
+        bitmap.close();
+        this._for_each_view((view) => view.update_canvas());
+      }).catch(() => {});
   };
 }
 export default {
   async initialize({ model }) {
     const ref = model.get('canvas') || '';
     const canvas = await model.widget_manager.get_model(ref.replace(/^IPY_MODEL_/, ''));
-    if (canvas && typeof canvas.handle_binary === 'function') patch(Object.getPrototypeOf(canvas));
+    if (canvas && typeof canvas.handle_binary === 'function') {
+      patch(Object.getPrototypeOf(canvas));
+      model.send({type: 'ready'});
+    }
   },
 };
 """
@@ -224,6 +268,17 @@ def _decoder_class():
         class _FrameDecoder(anywidget.AnyWidget):
             _esm = _DECODER_ESM
             canvas = traitlets.Instance(Canvas).tag(sync=True, **widget_serialization)
+
+            def __init__(self, **kwargs):
+                super().__init__(**kwargs)
+                self.on_msg(self._on_ready)
+
+            def _on_ready(self, widget, content, buffers):
+                if isinstance(content, dict) and content.get("type") == "ready":
+                    # frames from now on are painted in order; the next one is whole (the
+                    # one before may have been dropped by ipympl's own handler)
+                    self.canvas._course_last = None
+                    self.canvas._course_regions = True
 
         _DECODER_CLASS = _FrameDecoder
     return _DECODER_CLASS
