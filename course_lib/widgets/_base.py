@@ -99,6 +99,7 @@ def figure_3d(radius, title, size=4.3):
     ax = fig.add_subplot(projection="3d")
     fig.subplots_adjust(left=0, right=1, bottom=0.02, top=0.95)
     draw.setup_axes_3d(ax, radius=radius, title=title, box=False)
+    _style.style_axes(ax)
     return fig, ax
 
 

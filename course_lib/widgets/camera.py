@@ -198,8 +198,8 @@ def scene(state):
             lines.append(transforms.apply(m, np.array(piece))[:, :2])
     axes = view[:3, :3].T                                   # columns: x_e, y_e, z_e in WCS
     eye = np.array([state.eye_x, state.eye_y, state.eye_z])
-    text = (f"$M_{{WCS \\to ECS}} = {fmt.matrix_latex(view, 2)}$ &nbsp; "
-            f"$M_{{ECS \\to CSS}} = {fmt.matrix_latex(proj, 2)}$<br>"
+    text = (f"$M_{{WCS \\to ECS}} = {fmt.matrix_latex(view, 2, padded=True)}$ &nbsp; "
+            f"$M_{{ECS \\to CSS}} = {fmt.matrix_latex(proj, 2, padded=True)}$<br>"
             f"$x_e = {fmt.vector_latex(axes[:, 0], 2)}$, $y_e = {fmt.vector_latex(axes[:, 1], 2)}$,"
             f" $z_e = {fmt.vector_latex(axes[:, 2], 2)}$ (the rows of the rotation part)")
     return {"error": None, "view": view, "projection": proj, "eye": eye, "axes": axes,

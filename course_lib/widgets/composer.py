@@ -155,10 +155,10 @@ def scene(state):
     order = "listed order reversed" if state.reverse else "listed order"
     text = (f"Applied in the {order}, first to last: "
             f"{', '.join(f'${label}$' for label in labels) or 'nothing'}.<br>"
-            f"$M = {product} = {fmt.matrix_latex(composed, 2)}$<br>"
+            f"$M = {product} = {fmt.matrix_latex(composed, 2, padded=True)}$<br>"
             + ("The other order gives the <i>same</i> matrix: these operations commute."
                if commute else
-               f"The other order gives $M' = {fmt.matrix_latex(other, 2)} \\neq M$ "
+               f"The other order gives $M' = {fmt.matrix_latex(other, 2, padded=True)} \\neq M$ "
                "(dashed outline): matrix products do not commute."))
     return {"original": SHAPE, "steps": steps, "labels": labels, "matrix": composed,
             "other_matrix": other, "other_result": transforms.apply(other, SHAPE),

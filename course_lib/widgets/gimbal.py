@@ -150,7 +150,7 @@ class GimbalExplorer(Explorer):
         self.blitter = draw.Blitter(self.fig, [self.mesh, *self.rings, *self.pivots, self.lost])
         self._set_lost(s)
 
-        sliders = degree_sliders(None, label_width="60px",
+        sliders = degree_sliders(None,
                                  yaw=("yaw °", self.state.yaw_deg, -180, 180),
                                  pitch=("pitch °", self.state.pitch_deg, -90, 90),
                                  roll=("roll °", self.state.roll_deg, -180, 180))

@@ -118,9 +118,9 @@ def readout(n, theta, q, m):
         f"$q = (\\cos\\tfrac{{\\theta}}{{2}},\\ \\sin\\tfrac{{\\theta}}{{2}}\\,\\hat n)"
         f" = (\\cos {fmt.number(np.degrees(half), 1)}°,\\ "
         f"\\sin {fmt.number(np.degrees(half), 1)}°\\,\\hat n)$<br>"
-        f"$q = (s, x, y, z) = {fmt.vector_latex(q)}$, "
+        f"$q = (s, x, y, z) = {fmt.vector_latex(q)}$<br>"
         f"$\\lVert q \\rVert = {fmt.number(quaternions.norm(q))}$<br>"
-        f"$R_q = {fmt.matrix_latex(m)}$"
+        f"$R_q = {fmt.matrix_latex(m, padded=True)}$"
     )
 
 
@@ -160,13 +160,13 @@ class QuaternionExplorer(Explorer):
 
         sliders = degree_sliders(
             None,
-            azimuth=("axis azim. °", self.state.azimuth_deg, -180, 180),
-            elevation=("axis elev. °", self.state.elevation_deg, -90, 90),
+            azimuth=("axis azimuth °", self.state.azimuth_deg, -180, 180),
+            elevation=("axis elevation °", self.state.elevation_deg, -90, 90),
             angle=("angle θ °", self.state.angle_deg, -360, 360))
         self.azimuth, self.elevation, self.angle = sliders.values()
         bind(self.state, {"azimuth_deg": self.azimuth, "elevation_deg": self.elevation,
                           "angle_deg": self.angle}, self.update)
-        self.info = w.HTMLMath(value=s["text"], layout=w.Layout(width="330px"))
+        self.info = w.HTMLMath(value=s["text"], layout=w.Layout(width="400px"))
         self.widget = beside(self.fig.canvas, w.VBox([*sliders.values(), self.info]))
 
     def update(self):
