@@ -37,7 +37,7 @@ def test_quaternion_scene_matches_scipy(az, el, angle):
 def test_quaternion_readout_names_the_components():
     s = quaternion.scene(quaternion.State(0, 90, 90))          # 90 degrees about z
     assert "0.707" in s["text"] and "45" in s["text"]
-    assert r"\begin{bmatrix}" in s["text"]
+    assert r"\begin{matrix}" in s["text"]          # R_q, with room inside its brackets
 
 
 def test_quaternion_slider_moves_the_drawing():

@@ -12,7 +12,7 @@ from .. import draw
 from . import _style
 
 __all__ = ["Explorer", "PlotterExplorer", "align", "beside", "bind", "degree_sliders", "figure_3d",
-           "handle_comms_on_main_thread", "labelled", "pyvista_faces", "read_controls", "slider"]
+           "handle_comms_on_main_thread", "labelled", "panel", "pyvista_faces", "read_controls", "slider"]
 
 _COMM_MESSAGES = ("comm_open", "comm_msg", "comm_close")
 
@@ -202,6 +202,48 @@ def degree_sliders(on_change, label_width=None, **specs):
     return sliders
 
 
+#: What every panel's text is wrapped in: ipywidgets gives an HTML widget's text the line
+#: height of a control (28 px), which spaces a paragraph as if double-spaced.
+PANEL_OPEN = "<div style='line-height: 1.45'>"
+
+
+@functools.cache
+def _panel_class(math):
+    import ipywidgets as w
+    from traitlets import validate
+
+    class Panel(w.HTMLMath if math else w.HTML):
+        """An HTML (or HTMLMath) widget whose text is set in its normal line height."""
+
+        @validate("value")
+        def _tight(self, proposal):
+            value = proposal["value"]
+            if not value or value.startswith(PANEL_OPEN):
+                return value
+            return f"{PANEL_OPEN}{value}</div>"
+
+    Panel.__name__ = Panel.__qualname__ = "MathPanel" if math else "Panel"
+    return Panel
+
+
+def panel(value="", width=None, math=False):
+    """A text panel (an ``HTML`` widget, ``HTMLMath`` with `math`) `width` wide (CSS, default:
+    as wide as its text), its lines spaced as text rather than as controls.
+
+    Examples
+    --------
+    >>> info = panel("two<br>lines", width="300px")
+    >>> info.value.startswith(PANEL_OPEN), "two<br>lines" in info.value, info.layout.width
+    (True, True, '300px')
+    >>> type(panel(math=True)).__mro__[1].__name__
+    'HTMLMath'
+    """
+    import ipywidgets as w
+
+    layout = w.Layout(width=width) if width is not None else w.Layout()
+    return _panel_class(bool(math))(value=value, layout=layout)
+
+
 def read_controls(state, controls):
     """Copy each control's value into its field of `state`: ``controls`` maps field -> control.
 
@@ -261,7 +303,7 @@ def beside(canvas, controls, align="center"):
     if hasattr(canvas, "layout"):
         canvas.layout.flex = "0 0 auto"
     return w.HBox([canvas, controls], layout=w.Layout(flex_flow="row wrap", align_items=align,
-                                                      column_gap="12px"))
+                                                      grid_gap="0 12px"))
 
 
 class Explorer:

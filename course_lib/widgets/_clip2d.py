@@ -3,7 +3,7 @@
 import numpy as np
 
 from .. import clipping, draw
-from ._base import Explorer
+from ._base import Explorer, panel
 from ._drag import DraggablePoints
 
 BOX_MIN = np.array([-1.0, -1.0])
@@ -90,7 +90,7 @@ class StepExplorer(Explorer):
         count = self._step_count()
         self.step, controls = step_controls(self._on_step, count)
         self.step.value = self.state.step = count - 1
-        self.info = w.HTML(layout=w.Layout(width=info_width))
+        self.info = panel(width=info_width)
         self.widget = w.HBox([self.fig.canvas, w.VBox([controls, self.info])],
                              layout=w.Layout(flex_flow="row wrap"))
         self._draw(self._scene())

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import draw, texturing
-from ._base import Explorer, bind
+from ._base import Explorer, bind, panel
 from ._drag import DraggablePoints
 
 __all__ = ["BarycentricExplorer", "COLORS", "State", "scene", "signed_area"]
@@ -216,7 +216,7 @@ class BarycentricExplorer(Explorer):
         self.mode = w.ToggleButtons(options=MODES, value=self.state.mode,
                                     description="show", style={"button_width": "80px"})
         bind(self.state, {"mode": self.mode}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="700px"))
+        self.info = panel(width="700px")
         self.widget = w.VBox([self.fig.canvas, self.mode, self.info])
         self._draw(s)
 

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import curves, draw, format as fmt
-from ._base import Explorer, bind
+from ._base import Explorer, bind, panel
 from ._drag import DraggablePoints
 
 __all__ = ["BezierExplorer", "MAX_POINTS", "State", "convex_hull", "scene"]
@@ -168,7 +168,7 @@ class BezierExplorer(Explorer):
                                            description="de Casteljau")
         bind(self.state, {"t": self.t, "show_hull": self.hull_box,
                           "show_construction": self.construction_box}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="330px"))
+        self.info = panel(width="330px")
         controls = w.VBox([self.t, w.HBox(buttons[:2]), w.HBox(buttons[2:]),
                            w.HBox([self.hull_box, self.construction_box]), self.info])
         self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import curves, draw, format as fmt
-from ._base import Explorer
+from ._base import Explorer, panel
 from ._drag import DraggablePoints
 
 __all__ = ["BSplineExplorer", "KNOT_PRESETS", "State", "knot_vector", "scene"]
@@ -190,7 +190,7 @@ class BSplineExplorer(Explorer):
         for control in (self.degree, self.knots, self.point, self.weight):
             control.observe(self._on_control, names="value")
         self.knot_text.observe(self._on_knot_text, names="value")
-        self.info = w.HTML(layout=w.Layout(width="330px"))
+        self.info = panel(width="330px")
         controls = w.VBox([self.degree, self.knots, self.knot_text, self.point, self.weight,
                            w.HBox([add, remove]), self.info])
         self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))

@@ -15,7 +15,7 @@ import numpy as np
 
 from .. import clipping, draw, format as fmt, shapes, transforms, viewing
 from . import _style
-from ._base import Explorer, align, bind, slider
+from ._base import Explorer, align, bind, panel, slider
 
 __all__ = ["CameraExplorer", "PROJECTIONS", "State", "camera_matrices", "scene", "world"]
 
@@ -274,8 +274,8 @@ class CameraExplorer(Explorer):
                     w.HTML("<b>view volume</b>"), c["near"], c["far"]]),
             w.VBox([projection, c["fov_deg"], c["half_size"], c["oblique_deg"],
                     c["oblique_scale"]]),
-        ], layout=w.Layout(flex_flow="row wrap", column_gap="8px"))
-        self.info = w.HTMLMath()
+        ], layout=w.Layout(flex_flow="row wrap", grid_gap="0 8px"))
+        self.info = panel(math=True)
         _style.style_figure(self.fig)
         self.widget = w.VBox([self.fig.canvas, columns, self.info])
         self._enable_projection_controls()

@@ -12,7 +12,7 @@ import numpy as np
 
 from .. import clipping, draw, format as fmt, transforms, viewing
 from . import _style
-from ._base import Explorer, align, beside, bind, degree_sliders, figure_3d, slider
+from ._base import Explorer, align, beside, bind, degree_sliders, figure_3d, panel, slider
 
 __all__ = ["ClippingExplorer3D", "REGIONS", "State", "region_planes", "scene"]
 
@@ -146,7 +146,7 @@ class ClippingExplorer3D(Explorer):
                                       style={"button_width": _style.button_width(*REGIONS)})
         bind(self.state, {"region": self.region, "turn_deg": self.turn, "tilt_deg": self.tilt,
                           "lift": self.lift}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="340px"))
+        self.info = panel(width="340px")
         self.widget = beside(self.fig.canvas, w.VBox([self.region, self.turn, self.tilt,
                                                       self.lift, self.info]))
         self._draw(s)

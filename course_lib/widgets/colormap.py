@@ -18,7 +18,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import colormaps, draw, scivis
-from ._base import Explorer, bind
+from ._base import Explorer, bind, panel
 
 __all__ = ["DATASETS", "State", "ColormapExplorer", "example_data", "print_ambiguity",
            "scene"]
@@ -218,7 +218,7 @@ class ColormapExplorer(Explorer):
         self.data = w.Dropdown(options=DATASETS, value=self.state.data, description="data")
         bind(self.state, {"name": self.name, "reverse": self.reverse, "data": self.data},
              self.update)
-        self.info = w.HTML(layout=w.Layout(width="300px"))
+        self.info = panel(width="300px")
         controls = w.VBox([self.name, self.reverse, self.data, self.info])
         self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))
         self._draw(s)

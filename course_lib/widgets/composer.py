@@ -12,7 +12,7 @@ import numpy as np
 
 from .. import draw, format as fmt, shapes, transforms
 from .._validate import as_choice
-from ._base import Explorer
+from ._base import Explorer, panel
 
 __all__ = ["ComposerExplorer", "OPERATIONS", "Operation", "State", "scene"]
 
@@ -272,7 +272,7 @@ class ComposerExplorer(Explorer):
                                       description="apply in reverse order", icon="exchange",
                                       layout=w.Layout(width="200px"))
         self.reverse.observe(lambda _: self.refresh(), names="value")
-        self.info = w.HTMLMath(value=s["text"])
+        self.info = panel(s["text"], math=True)
         for op in self.state.operations:
             self._append_row(op)
         self.widget = w.VBox([self.rows_box, w.HBox([self.add_button, self.reverse]),

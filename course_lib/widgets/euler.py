@@ -11,7 +11,7 @@ import numpy as np
 
 from .. import draw, mesh
 from .._validate import as_choice
-from ._base import Explorer, beside, bind, figure_3d, labelled, slider
+from ._base import Explorer, beside, bind, figure_3d, labelled, panel, slider
 
 __all__ = ["MESHES", "EulerExplorer", "State", "scene"]
 
@@ -102,7 +102,7 @@ class EulerExplorer(Explorer):
         self.choice = labelled(w.Dropdown, "mesh", options=list(MESHES), value=self.state.mesh)
         self.refinement = slider("refine", self.state.refinement, 0, 3, 1, kind=w.IntSlider)
         bind(self.state, {"mesh": self.choice, "refinement": self.refinement}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="360px"))
+        self.info = panel(width="360px")
         self.widget = beside(self.fig.canvas, w.VBox([self.choice, self.refinement, self.info]))
         self._draw(s)
 

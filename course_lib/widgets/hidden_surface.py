@@ -12,7 +12,7 @@ import numpy as np
 
 from .. import clipping, draw, shapes, viewing, visibility
 from . import _style
-from ._base import Explorer, beside, bind, degree_sliders
+from ._base import Explorer, beside, bind, degree_sliders, panel
 
 __all__ = ["HiddenSurfaceExplorer", "State", "mesh", "scene"]
 
@@ -145,7 +145,7 @@ class HiddenSurfaceExplorer(Explorer):
         self.cull = w.Checkbox(value=self.state.cull, description="cull back faces")
         bind(self.state, {"azimuth_deg": self.azimuth, "elevation_deg": self.elevation,
                           "cull": self.cull}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="330px"))
+        self.info = panel(width="330px")
         self.widget = w.VBox([self.fig.canvas, beside(w.VBox([*sliders.values(), self.cull]),
                                                       self.info)])
         self._draw(s)

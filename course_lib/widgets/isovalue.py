@@ -31,7 +31,7 @@ import numpy as np
 
 from .. import draw, scivis
 from .._validate import as_choice
-from ._base import Explorer, PlotterExplorer, bind, pyvista_faces
+from ._base import Explorer, PlotterExplorer, bind, panel, pyvista_faces
 
 __all__ = ["FIELDS", "IsolineExplorer", "IsosurfaceExplorer", "State", "State3D", "VOLUMES",
            "alternative_segments", "classic_marching_cubes", "example_data", "example_volume",
@@ -292,7 +292,7 @@ class IsolineExplorer(Explorer):
         bind(self.state, {"level": self.level}, self.update)
         for control in (self.field, self.size, self.cases_box):
             control.observe(self._on_layout, names="value")
-        self.info = w.HTML(layout=w.Layout(width="330px"))
+        self.info = panel(width="330px")
         controls = w.VBox([self.level, self.field, self.size, self.cases_box, self.info])
         self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))
         self._level_range()
@@ -584,7 +584,7 @@ class IsosurfaceExplorer(PlotterExplorer):
         self._on_change = bind(self.state, {"level": self.level, "table": self.table,
                                             "azimuth": self.azimuth,
                                             "elevation": self.elevation}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="340px"))
+        self.info = panel(width="340px")
         self.widget = w.HBox([self.image, w.VBox([self.volume, self.level, self.table,
                                                   self.azimuth, self.elevation, self.info])],
                              layout=w.Layout(flex_flow="row wrap"))

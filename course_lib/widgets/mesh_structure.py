@@ -14,7 +14,7 @@ import numpy as np
 from .. import draw, mesh
 from .._validate import as_choice
 from . import _style
-from ._base import Explorer, beside, bind, figure_3d, labelled, slider
+from ._base import Explorer, beside, bind, figure_3d, labelled, panel, slider
 
 __all__ = ["MESHES", "HalfEdgeExplorer", "State", "scene"]
 
@@ -177,8 +177,8 @@ class HalfEdgeExplorer(Explorer):
             self.buttons[name] = button
         self.choice.observe(self._on_mesh, names="value")
         bind(self.state, {"half_edge": self.index}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="380px"))
-        self.table = w.HTML()
+        self.info = panel(width="380px")
+        self.table = panel()
         controls = w.VBox([self.choice, self.index, w.HBox(list(self.buttons.values())),
                            self.info, self.table])
         self.widget = beside(self.fig.canvas, controls)

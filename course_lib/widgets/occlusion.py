@@ -24,7 +24,7 @@ import numpy as np
 from .. import draw, shading
 from .._validate import as_choice
 from . import _style
-from ._base import Explorer, bind, slider
+from ._base import Explorer, bind, panel, slider
 
 __all__ = ["KINDS", "MAX_SAMPLES", "OcclusionExplorer", "State", "convergence", "exact",
            "floor_points", "occluders", "ray_visibility", "scene"]
@@ -316,7 +316,7 @@ class OcclusionExplorer(Explorer):
                            continuous_update=False)
         bind(self.state, {"samples": self.samples, "kind": self.kind, "seed": self.seed},
              self.update)
-        self.info = w.HTML(layout=w.Layout(width="760px"))
+        self.info = panel(width="760px")
         self.widget = w.VBox([self.fig.canvas, w.HBox([self.samples, self.seed],
                                                       layout=w.Layout(flex_flow="row wrap")),
                               self.kind,

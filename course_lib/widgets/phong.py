@@ -26,7 +26,7 @@ import numpy as np
 from .. import draw, shading, viewing
 from .._validate import as_choice
 from . import _style
-from ._base import Explorer, align, beside, bind, degree_sliders, labelled, slider
+from ._base import Explorer, align, beside, bind, degree_sliders, labelled, panel, slider
 
 __all__ = ["MODELS", "PhongExplorer", "State", "interpolation_buffers", "light_direction",
            "scene", "sphere_normals"]
@@ -342,14 +342,14 @@ class PhongExplorer(Explorer):
                   "light_elevation": self.elevation, "light_color": self.light_color,
                   "color": self.color, "model": self.model, "segments": self.segments},
              self.update)
-        self.info = w.HTML(layout=w.Layout(width="330px"))
+        self.info = panel(width="330px")
         column1 = w.VBox(align([self.ka, self.kd, self.ks, self.shininess, self.emission]))
         column2 = w.VBox(align([self.azimuth, self.elevation, self.light_color, self.color,
                                 self.segments]))
         self.widget = w.VBox([beside(self.fig.canvas, w.VBox([self.model, self.info]),
                                      align="flex-start"),
                               w.HBox([column1, column2], layout=w.Layout(flex_flow="row wrap",
-                                                                         column_gap="12px"))])
+                                                                         grid_gap="0 12px"))])
         self._draw(s)
 
     def update(self):

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, format as fmt, quaternions, shapes
-from ._base import Explorer, beside, bind, degree_sliders, figure_3d
+from ._base import Explorer, beside, bind, degree_sliders, figure_3d, panel
 
 __all__ = ["QuaternionExplorer", "State", "axis_from_angles", "readout", "scene"]
 
@@ -166,7 +166,7 @@ class QuaternionExplorer(Explorer):
         self.azimuth, self.elevation, self.angle = sliders.values()
         bind(self.state, {"azimuth_deg": self.azimuth, "elevation_deg": self.elevation,
                           "angle_deg": self.angle}, self.update)
-        self.info = w.HTMLMath(value=s["text"], layout=w.Layout(width="400px"))
+        self.info = panel(s["text"], width="400px", math=True)
         self.widget = beside(self.fig.canvas, w.VBox([*sliders.values(), self.info]))
 
     def update(self):

@@ -17,7 +17,7 @@ import numpy as np
 
 from .. import draw, raytracing as rt
 from .._validate import as_choice
-from ._base import Explorer, read_controls
+from ._base import Explorer, panel, read_controls
 
 __all__ = ["KINDS", "RAY_COLORS", "RayTreeExplorer", "State", "clip_segment", "example",
            "picture", "scene"]
@@ -308,8 +308,8 @@ class RayTreeExplorer(Explorer):
         for control in (self.kind, self.row, self.column, self.depth, self.shadows):
             control.observe(self._on_change, names="value")
         self._cid = self.fig.canvas.mpl_connect("button_press_event", self._on_click)
-        self.info = w.HTML(layout=w.Layout(width="330px"))
-        self.table = w.HTML()
+        self.info = panel(width="330px")
+        self.table = panel()
         self._kind_drawn = self.state.kind
         self.widget = w.VBox([w.HBox([self.fig.canvas,
                                       w.VBox([self.kind, self.row, self.column, self.depth,

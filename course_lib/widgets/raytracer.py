@@ -23,7 +23,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .. import raytracing as rt
-from ._base import Explorer, bind, slider
+from ._base import Explorer, bind, panel, slider
 
 __all__ = ["FULL", "PREVIEW", "RayTracerExplorer", "State", "TARGET", "build_scene",
            "make_camera", "scene"]
@@ -210,7 +210,7 @@ class RayTracerExplorer(Explorer):
         self.full_button = w.Button(description="render full image", icon="image")
         self.full_button.on_click(lambda _: self.settle())
         self.status = w.HTML()
-        self.info = w.HTML(layout=w.Layout(width=f"{DISPLAY_WIDTH}px"))
+        self.info = panel(width=f"{DISPLAY_WIDTH}px")
         controls = w.VBox([self.depth, self.shadows, self.mirror, self.glass, self.ior,
                            self.floor, self.azimuth, self.elevation, self.distance,
                            self.full_button, self.status])

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, mesh
-from ._base import PlotterExplorer, bind, pyvista_faces
+from ._base import PlotterExplorer, bind, panel, pyvista_faces
 
 __all__ = ["START_FACES", "TARGET_FACES", "SimplificationExplorer", "State", "bumpy_sphere",
            "scene"]
@@ -141,8 +141,8 @@ class SimplificationExplorer(PlotterExplorer):
         self.faces = w.IntSlider(value=self.state.faces, min=TARGET_FACES, max=START_FACES,
                                  step=2, description="faces", continuous_update=True)
         bind(self.state, {"faces": self.faces}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="380px"))
-        self.table = w.HTML()
+        self.info = panel(width="380px")
+        self.table = panel()
         self.widget = w.HBox([self.image, w.VBox([self.faces, self.info, self.table])],
                              layout=w.Layout(flex_flow="row wrap"))
         self._draw(s)

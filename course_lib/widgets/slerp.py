@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, quaternions, shapes
-from ._base import Explorer
+from ._base import Explorer, panel
 
 __all__ = ["PRESETS", "SlerpExplorer", "State", "angular_speed", "euler_quaternions", "paths",
            "scene"]
@@ -207,7 +207,7 @@ class SlerpExplorer(Explorer):
                                  layout=w.Layout(width="360px"))
         self.t.observe(self._on_change, names="value")
         self.preset.observe(self._on_change, names="value")
-        self.info = w.HTML(value=s["text"], layout=w.Layout(width="800px"))
+        self.info = panel(s["text"], width="800px")
         self.widget = w.VBox([w.HBox([self.preset, self.t]), self.fig.canvas, self.info])
 
     def _rescale_speed(self, s):

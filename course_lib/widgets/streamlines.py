@@ -17,7 +17,7 @@ import numpy as np
 
 from .. import draw, scivis
 from .._validate import as_choice
-from ._base import Explorer, bind
+from ._base import Explorer, bind, panel
 from ._drag import DraggablePoints
 
 __all__ = ["FIELDS", "METHODS", "State", "StreamlineExplorer", "convergence", "exact_streamline",
@@ -310,7 +310,7 @@ class StreamlineExplorer(Explorer):
         self.duration.observe(self._on_duration, names="value")
         bind(self.state, {"method": self.method, "step": self.step,
                           "show_exact": self.exact_box}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="340px"))
+        self.info = panel(width="340px")
         controls = w.VBox([self.kind, self.method, self.step, self.duration, self.exact_box,
                            self.info])
         self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))

@@ -13,7 +13,7 @@ import numpy as np
 
 from .. import curves, draw, surfaces
 from .._validate import as_choice
-from ._base import PlotterExplorer, bind
+from ._base import PlotterExplorer, bind, panel
 
 __all__ = ["KINDS", "State", "SurfaceExplorer", "control_grid", "scene"]
 
@@ -187,7 +187,7 @@ class SurfaceExplorer(PlotterExplorer):
         bind(self.state, {"kind": self.kind, "i": self.i, "j": self.j, "lift": self.lift,
                           "weight": self.weight, "azimuth": self.azimuth,
                           "elevation": self.elevation}, self._on_change)
-        self.info = w.HTML(layout=w.Layout(width="360px"))
+        self.info = panel(width="360px")
         self.widget = w.HBox([self.image, w.VBox([self.kind, self.i, self.j, self.lift,
                                                   self.weight, self.azimuth, self.elevation,
                                                   self.info])],

@@ -30,7 +30,7 @@ import numpy as np
 
 from .. import draw, texturing
 from .._validate import as_choice
-from ._base import PlotterExplorer, labelled, read_controls, slider
+from ._base import PlotterExplorer, labelled, panel, read_controls, slider
 
 __all__ = ["MAPPINGS", "SIZES", "State", "TEXTURES", "TextureExplorer", "compendium_map",
            "filtering", "mesh_grid", "scene", "texture_image", "texture_uv"]
@@ -474,7 +474,7 @@ class TextureExplorer(PlotterExplorer):
         for name, control in self.controls.items():
             if name != "texture":
                 control.observe(self._on_change, names="value")
-        self.info = w.HTML(layout=w.Layout(width="320px"))
+        self.info = panel(width="320px")
         controls = w.VBox([self.texture, self.frequency, self.strength, self.size,
                            self.sampling, self.mapping, self.azimuth, self.elevation])
         self.widget = w.VBox([w.HBox([self.image, controls, self.info],

@@ -31,7 +31,7 @@ import numpy as np
 from .. import colormaps, draw, scivis
 from .._validate import as_choice
 from . import _style
-from ._base import Explorer, align, beside, bind, labelled, slider
+from ._base import Explorer, align, beside, bind, labelled, panel, slider
 from ._drag import DraggablePoints
 
 __all__ = ["FIELDS", "PRESETS", "RaySamples", "State", "TransferFunctionExplorer", "example_data",
@@ -430,7 +430,7 @@ class TransferFunctionExplorer(Explorer):
             control.observe(self._on_edit, names="value")
         self.recolor.observe(self._on_recolor, names="value")
         bind(self.state, {"azimuth": self.azimuth, "thickness": self.thickness}, self.update)
-        self.info = w.HTML(layout=w.Layout(width=width))
+        self.info = panel(width=width)
         controls = w.VBox([self.preset, self.field, self.point, self.value, self.opacity,
                            self.color, w.HBox([add, remove]), self.recolor, self.thickness,
                            self.azimuth,

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, visibility
-from ._base import Explorer, bind
+from ._base import Explorer, bind, panel
 from ._drag import pseudocode_html
 
 __all__ = ["ORDERS", "PSEUDOCODE", "State", "TRIANGLES", "ZBufferExplorer", "scene"]
@@ -174,7 +174,7 @@ class ZBufferExplorer(Explorer):
         self.step = w.IntSlider(value=self.state.step, min=0, max=len(TRIANGLES),
                                 description="triangles", continuous_update=True)
         bind(self.state, {"order": self.order, "step": self.step}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="800px"))
+        self.info = panel(width="800px")
         legend = w.HTML("<small>□ pixels the current triangle covers &nbsp; × pixels it "
                         "overwrites</small>")
         self.widget = w.VBox([w.HBox([self.order, self.step]), self.fig.canvas, legend,
