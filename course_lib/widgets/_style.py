@@ -20,7 +20,8 @@ True
 """
 import math
 
-__all__ = ["ANNOTATION", "DPI", "LABEL", "LEGEND", "SYMBOL", "TICK", "TITLE",
+__all__ = ["ANNOTATION", "DPI", "LABEL", "LEGEND", "PICTURE_LABEL", "PICTURE_TITLE", "SYMBOL",
+           "TICK", "TITLE", "scalar_bar",
            "button_width", "label_width", "legend", "px", "style_axes", "style_figure"]
 
 #: Dots per inch of every explorer figure (before the lecture scale).
@@ -37,6 +38,11 @@ LABEL = 10
 TITLE = 10.5
 #: Large signs between pictures (the Phong explorer's "+" and "=").
 SYMBOL = 16
+
+#: Text in the rendered 3D pictures (pyvista scalar bars), in pixels at the laptop scale.
+PICTURE_LABEL = 12
+#: Titles in the rendered 3D pictures.
+PICTURE_TITLE = 13
 
 #: Width in CSS pixels of one character of a control's 13 px text, taken generously.
 CHAR_PX = 8
@@ -136,3 +142,26 @@ def legend(ax, **options):
     """
     options.setdefault("fontsize", LEGEND)
     return ax.legend(**options)
+
+
+def scalar_bar(title, **options):
+    """Arguments for a pyvista scalar bar (``add_mesh(..., scalar_bar_args=...)``): a thin
+    vertical bar along the right edge of the picture, its text in the shared picture sizes
+    (scaled with the lecture scale, like the picture), three labels with two decimals.
+    Further `options` override these.
+
+    Examples
+    --------
+    >>> args = scalar_bar("error")
+    >>> args["title"], args["vertical"], args["label_font_size"] >= PICTURE_LABEL
+    ('error', True, True)
+    """
+    from .. import draw
+
+    scale = draw.lecture_scale()
+    args = {"title": title, "vertical": True, "position_x": 0.86, "position_y": 0.12,
+            "width": 0.05, "height": 0.72, "n_labels": 3, "fmt": "%.2f",
+            "title_font_size": round(PICTURE_TITLE * scale),
+            "label_font_size": round(PICTURE_LABEL * scale), "color": "#262626"}
+    args.update(options)
+    return args
