@@ -109,7 +109,8 @@ def labelled(kind, description, label_width=None, width=None, body=None, **optio
     The label is `label_width` wide (CSS; default :func:`._style.label_width` of the
     description, so that it is never cut) and the whole control `width` (default: the label and
     `body` pixels for the control itself, :data:`CONTROL_BODY` unless given; a given width too
-    small for the label and :data:`MIN_BODY` is widened). Further `options` go to the class.
+    small for the label and :data:`MIN_BODY` is widened; a menu's default body fits its longest
+    entry). Further `options` go to the class.
 
     Examples
     --------
@@ -124,6 +125,10 @@ def labelled(kind, description, label_width=None, width=None, body=None, **optio
 
     label_width = label_width or _style.label_width(description)
     label = _style.px(label_width)
+    if body is None and issubclass(kind, w.Dropdown) and options.get("options") is not None:
+        # a menu as wide as its longest entry (with room for its arrow)
+        entries = [o[0] if isinstance(o, tuple) else str(o) for o in options["options"]]
+        body = max(CONTROL_BODY, _style.px(_style.button_width(*entries)))
     total = (label + (body or CONTROL_BODY) if width is None
              else max(_style.px(width), label + MIN_BODY))
     return kind(description=description, style={"description_width": label_width},
