@@ -11,7 +11,7 @@ import numpy as np
 from .. import draw
 from . import _style
 
-__all__ = ["Explorer", "PlotterExplorer", "align", "beside", "bind", "degree_sliders", "figure_3d",
+__all__ = ["Explorer", "PlotterExplorer", "align", "beside", "bind", "checkbox", "degree_sliders", "figure_3d",
            "handle_comms_on_main_thread", "labelled", "panel", "pyvista_faces", "read_controls", "slider"]
 
 _COMM_MESSAGES = ("comm_open", "comm_msg", "comm_close")
@@ -168,6 +168,23 @@ def slider(description, value, low, high, step, on_change=None, *, kind=None,
     if on_change is not None:
         control.observe(on_change, names="value")
     return control
+
+
+def checkbox(description, value=False):
+    """A check box with its description right of the box, no wider than both (ipywidgets'
+    default box is 300 px wide and indented by a label width, so two of them side by side
+    pushed a control column past its figure).
+
+    Examples
+    --------
+    >>> box = checkbox("convex hull", True)
+    >>> box.value, box.indent, box.layout.width
+    (True, False, 'auto')
+    """
+    import ipywidgets as w
+
+    return w.Checkbox(value=value, description=description, indent=False,
+                      layout=w.Layout(width="auto"))
 
 
 def align(controls):

@@ -14,7 +14,7 @@ import numpy as np
 
 from .. import curves, draw, format as fmt
 from . import _style
-from ._base import Explorer, beside, bind, panel, slider
+from ._base import Explorer, beside, bind, checkbox, panel, slider
 from ._drag import DraggablePoints
 
 __all__ = ["BezierExplorer", "MAX_POINTS", "State", "convex_hull", "scene"]
@@ -166,14 +166,14 @@ class BezierExplorer(Explorer):
                 width=_style.button_width("subdivide at t", "elevate degree")))
             button.on_click(lambda _, action=action: action())
             buttons.append(button)
-        self.hull_box = w.Checkbox(value=self.state.show_hull, description="convex hull")
-        self.construction_box = w.Checkbox(value=self.state.show_construction,
-                                           description="de Casteljau")
+        self.hull_box = checkbox("convex hull", self.state.show_hull)
+        self.construction_box = checkbox("de Casteljau", self.state.show_construction)
         bind(self.state, {"t": self.t, "show_hull": self.hull_box,
                           "show_construction": self.construction_box}, self.update)
         self.info = panel(width="330px")
         controls = w.VBox([self.t, w.HBox(buttons[:2]), w.HBox(buttons[2:]),
-                           w.HBox([self.hull_box, self.construction_box]), self.info])
+                           w.HBox([self.hull_box, self.construction_box],
+                                  layout=w.Layout(grid_gap="0 16px")), self.info])
         self.widget = beside(self.fig.canvas, controls)
         self._split = None
         self._draw(scene(self.state))

@@ -259,7 +259,7 @@ class CameraExplorer(Explorer):
                                       body=180)
                          for name, (description, low, high, step) in self.SLIDERS.items()}
         projection = w.ToggleButtons(options=PROJECTIONS, value=self.state.projection,
-                                     style={"button_width": _style.button_width(*PROJECTIONS)})
+                                     style={"button_width": "auto"})   # each fits its name
         self.controls["projection"] = projection
         bind(self.state, self.controls, self._on_change)
         c = self.controls

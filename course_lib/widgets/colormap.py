@@ -19,7 +19,7 @@ import numpy as np
 
 from .. import colormaps, draw, scivis
 from . import _style
-from ._base import Explorer, beside, bind, labelled, panel
+from ._base import Explorer, beside, bind, checkbox, labelled, panel
 
 __all__ = ["DATASETS", "State", "ColormapExplorer", "example_data", "print_ambiguity",
            "scene"]
@@ -215,7 +215,7 @@ class ColormapExplorer(Explorer):
                                                self.strip, self.grey_strip])
         self.name = labelled(w.Dropdown, "map", options=colormaps.COLORMAP_NAMES,
                              value=self.state.name)
-        self.reverse = w.Checkbox(value=self.state.reverse, description="reversed")
+        self.reverse = checkbox("reversed", self.state.reverse)
         self.data = labelled(w.Dropdown, "data", options=DATASETS, value=self.state.data)
         bind(self.state, {"name": self.name, "reverse": self.reverse, "data": self.data},
              self.update)

@@ -277,7 +277,7 @@ class ComposerExplorer(Explorer):
                                       layout=w.Layout(
                                           width=_style.button_width("apply in reverse order__")))
         self.reverse.observe(lambda _: self.refresh(), names="value")
-        self.info = panel(s["text"], math=True)
+        self.info = panel(s["text"], width="500px", math=True)
         for op in self.state.operations:
             self._append_row(op)
         self.widget = w.VBox([self.rows_box, w.HBox([self.add_button, self.reverse]),

@@ -12,7 +12,7 @@ import numpy as np
 
 from .. import clipping, draw, shapes, viewing, visibility
 from . import _style
-from ._base import Explorer, beside, bind, degree_sliders, panel
+from ._base import Explorer, beside, bind, checkbox, degree_sliders, panel
 
 __all__ = ["HiddenSurfaceExplorer", "State", "mesh", "scene"]
 
@@ -142,7 +142,7 @@ class HiddenSurfaceExplorer(Explorer):
                                  elevation=("camera elevation °", self.state.elevation_deg, -89,
                                             89))
         self.azimuth, self.elevation = sliders.values()
-        self.cull = w.Checkbox(value=self.state.cull, description="cull back faces")
+        self.cull = checkbox("cull back faces", self.state.cull)
         bind(self.state, {"azimuth_deg": self.azimuth, "elevation_deg": self.elevation,
                           "cull": self.cull}, self.update)
         self.info = panel(width="330px")

@@ -32,8 +32,8 @@ import numpy as np
 from .. import draw, scivis
 from .._validate import as_choice
 from . import _style
-from ._base import (Explorer, PlotterExplorer, align, beside, bind, labelled, panel,
-                    pyvista_faces, slider)
+from ._base import (Explorer, PlotterExplorer, align, beside, bind,
+                    checkbox, labelled, panel, pyvista_faces, slider)
 
 __all__ = ["FIELDS", "IsolineExplorer", "IsosurfaceExplorer", "State", "State3D", "VOLUMES",
            "alternative_segments", "classic_marching_cubes", "example_data", "example_volume",
@@ -294,7 +294,7 @@ class IsolineExplorer(Explorer):
         self.field = labelled(w.Dropdown, "field", options=FIELDS, value=self.state.field)
         self.size = slider("samples", self.state.size, 4, MAX_SIZE, 1, kind=w.IntSlider)
         align([self.level, self.field, self.size])
-        self.cases_box = w.Checkbox(value=self.state.show_cases, description="case numbers")
+        self.cases_box = checkbox("case numbers", self.state.show_cases)
         bind(self.state, {"level": self.level}, self.update)
         for control in (self.field, self.size, self.cases_box):
             control.observe(self._on_layout, names="value")

@@ -18,7 +18,7 @@ import numpy as np
 from .. import draw, raytracing as rt
 from .._validate import as_choice
 from . import _style
-from ._base import Explorer, align, beside, panel, read_controls, slider
+from ._base import Explorer, align, beside, checkbox, panel, read_controls, slider
 
 __all__ = ["KINDS", "RAY_COLORS", "RayTreeExplorer", "State", "clip_segment", "example",
            "picture", "scene"]
@@ -299,8 +299,7 @@ class RayTreeExplorer(Explorer):
             slider("pixel row", self.state.row, 0, h_img - 1, 1, kind=w.IntSlider),
             slider("pixel column", self.state.column, 0, w_img - 1, 1, kind=w.IntSlider),
             slider("max depth", self.state.max_depth, 0, 6, 1, kind=w.IntSlider)])
-        self.shadows = w.Checkbox(value=self.state.shadows, description="shadow rays",
-                                  indent=False)
+        self.shadows = checkbox("shadow rays", self.state.shadows)
         #: field of ``State`` -> its control (a click on the image sets row and column)
         self.controls = {"kind": self.kind, "max_depth": self.depth, "shadows": self.shadows,
                          "row": self.row, "column": self.column}

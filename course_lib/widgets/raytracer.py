@@ -24,7 +24,7 @@ import numpy as np
 
 from .. import raytracing as rt
 from . import _style
-from ._base import Explorer, align, beside, bind, panel, slider
+from ._base import Explorer, align, beside, bind, checkbox, panel, slider
 
 __all__ = ["FULL", "PREVIEW", "RayTracerExplorer", "State", "TARGET", "build_scene",
            "make_camera", "scene"]
@@ -194,7 +194,7 @@ class RayTracerExplorer(Explorer):
         st = self.state
         options = {}
         self.depth = slider("recursion depth", st.max_depth, 0, 6, 1, kind=w.IntSlider, **options)
-        self.shadows = w.Checkbox(value=st.shadows, description="shadow rays", indent=False)
+        self.shadows = checkbox("shadow rays", st.shadows)
         self.mirror = slider("mirror k_r", st.mirror_reflectivity, 0, 1, 0.05, **options)
         self.glass = slider("glass k_t", st.glass_transparency, 0, 1, 0.05, **options)
         self.ior = slider("glass index η", st.glass_ior, 1.0, 2.5, 0.01, **options)

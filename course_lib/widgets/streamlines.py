@@ -18,7 +18,7 @@ import numpy as np
 from .. import draw, scivis
 from .._validate import as_choice
 from . import _style
-from ._base import Explorer, align, beside, bind, labelled, panel, slider
+from ._base import Explorer, align, beside, bind, checkbox, labelled, panel, slider
 from ._drag import DraggablePoints
 
 __all__ = ["FIELDS", "METHODS", "State", "StreamlineExplorer", "convergence", "exact_streamline",
@@ -311,7 +311,7 @@ class StreamlineExplorer(Explorer):
         self.duration = slider("time T", self.state.duration, 0.5, 2 * np.pi, 0.05,
                                readout_format=".2f", continuous_update=False)
         align([self.kind, self.step, self.duration])
-        self.exact_box = w.Checkbox(value=self.state.show_exact, description="exact path")
+        self.exact_box = checkbox("exact path", self.state.show_exact)
         self.kind.observe(self._on_kind, names="value")
         self.duration.observe(self._on_duration, names="value")
         bind(self.state, {"method": self.method, "step": self.step,

@@ -9,8 +9,9 @@ One ``page.evaluate`` per widget view (:func:`look_problems`) reads, in the brow
   ``scrollWidth`` exceeds its ``clientWidth``;
 * every menu (``<select>``): the selected entry's text, measured in the menu's own font,
   must fit the menu's box less its padding (the arrow sits in the right padding);
-* every element of the view: its right edge must not pass the right edge of the cell's output
-  area (what passes it is clipped or scrolled out of sight).
+* every element of the view (but MathJax's invisible copy of a formula for screen readers): its
+  right edge must not pass the right edge of the cell's output area (what passes it is clipped
+  or scrolled out of sight).
 """
 
 #: Pixels of slack: a width rounded up by the layout engine is not a cut label.
@@ -47,6 +48,8 @@ _LOOK = r"""(root, tolerance) => {
   const right = area.getBoundingClientRect().right;
   let widest = null;
   [root, ...root.querySelectorAll('*')].forEach(el => {
+    // MathJax's copy of a formula for screen readers is clipped to nothing (not seen)
+    if (el.closest('mjx-assistive-mml')) return;
     const box = el.getBoundingClientRect();
     if (box.width === 0 || box.height === 0) return;
     if (box.right > right + tolerance && (widest === null || box.right > widest.right)) {
