@@ -188,22 +188,24 @@ def checkbox(description, value=False):
 
 
 def align(controls):
-    """Give the labelled `controls` of one column the same label width (the widest one's),
-    each keeping the room its control itself had; returns them.
+    """Line up the labelled `controls` of one column: the same label width (the widest one's)
+    and the same overall width (the widest control's, once its label is widened); returns
+    them.
 
     Examples
     --------
-    >>> a, b = slider("x", 0, 0, 1, 0.1), slider("shininess n", 0, 0, 1, 0.1)
+    >>> a, b = slider("x", 0, 0, 1, 0.1), slider("shininess n", 0, 0, 1, 0.1, body=250)
     >>> [(c.style.description_width, c.layout.width) for c in align([a, b])]
-    [('98px', '318px'), ('98px', '318px')]
+    [('98px', '348px'), ('98px', '348px')]
     """
     controls = list(controls)
     labels = [_style.px(c.style.description_width) for c in controls]
     widest = max(labels, default=0)
-    for control, label in zip(controls, labels):
-        body = _style.px(control.layout.width) - label
+    total = max((_style.px(c.layout.width) - label + widest
+                 for c, label in zip(controls, labels)), default=0)
+    for control in controls:
         control.style.description_width = f"{widest}px"
-        control.layout.width = f"{widest + body}px"
+        control.layout.width = f"{total}px"
     return controls
 
 
