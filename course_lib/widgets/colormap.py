@@ -19,7 +19,7 @@ import numpy as np
 
 from .. import colormaps, draw, scivis
 from . import _style
-from ._base import Explorer, beside, bind, checkbox, labelled, panel
+from ._base import Explorer, align, beside, bind, checkbox, labelled, panel
 
 __all__ = ["DATASETS", "State", "ColormapExplorer", "example_data", "print_ambiguity",
            "scene"]
@@ -217,6 +217,7 @@ class ColormapExplorer(Explorer):
                              value=self.state.name)
         self.reverse = checkbox("reversed", self.state.reverse)
         self.data = labelled(w.Dropdown, "data", options=DATASETS, value=self.state.data)
+        align([self.name, self.data])
         bind(self.state, {"name": self.name, "reverse": self.reverse, "data": self.data},
              self.update)
         self.info = panel(width="300px")

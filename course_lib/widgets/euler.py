@@ -11,7 +11,7 @@ import numpy as np
 
 from .. import draw, mesh
 from .._validate import as_choice
-from ._base import Explorer, beside, bind, figure_3d, labelled, panel, slider
+from ._base import Explorer, align, beside, bind, figure_3d, labelled, panel, slider
 
 __all__ = ["MESHES", "EulerExplorer", "State", "scene"]
 
@@ -101,6 +101,7 @@ class EulerExplorer(Explorer):
         self.blitter = draw.Blitter(self.fig, [self.surface])
         self.choice = labelled(w.Dropdown, "mesh", options=list(MESHES), value=self.state.mesh)
         self.refinement = slider("refine", self.state.refinement, 0, 3, 1, kind=w.IntSlider)
+        align([self.choice, self.refinement])
         bind(self.state, {"mesh": self.choice, "refinement": self.refinement}, self.update)
         self.info = panel(width="360px")
         self.widget = beside(self.fig.canvas, w.VBox([self.choice, self.refinement, self.info]))

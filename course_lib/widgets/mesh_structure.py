@@ -14,7 +14,7 @@ import numpy as np
 from .. import draw, mesh
 from .._validate import as_choice
 from . import _style
-from ._base import Explorer, beside, bind, figure_3d, labelled, panel, slider
+from ._base import Explorer, align, beside, bind, figure_3d, labelled, panel, slider
 
 __all__ = ["MESHES", "HalfEdgeExplorer", "State", "scene"]
 
@@ -169,6 +169,7 @@ class HalfEdgeExplorer(Explorer):
         self.choice = labelled(w.Dropdown, "mesh", options=list(MESHES), value=self.state.mesh)
         self.index = labelled(w.BoundedIntText, "half-edge", value=self.state.half_edge, min=0,
                               max=self.he.n_half_edges - 1)
+        align([self.choice, self.index])
         self.buttons = {}
         for name in ("previous", "next", "opposite"):
             button = w.Button(description=name, layout=w.Layout(
