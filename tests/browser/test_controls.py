@@ -43,6 +43,8 @@ EXPECTED = {
         "none", "the preset chosen just before ('ramp') is already grey"),
     ("RayTracerExplorer", "button|render full image|1", None): (
         "none", "the full image is already shown once the sliders rest"),
+    ("SurfaceExplorer", "toggles|Bézier/B-spline/NURBS|1", "NURBS"): (
+        "text", "with every weight 1 (the default) a NURBS patch is its B-spline patch"),
     ("MockExamWidget", "textarea||1", None): (
         "none", "an answer is read when it is submitted"),
     ("MockExamWidget", "number|seed|1", None): (
