@@ -40,13 +40,16 @@ def _entries(m, decimals):
     return [[number(v, decimals) for v in row] for row in m]
 
 
-def matrix_latex(M, decimals=3):
+def matrix_latex(M, decimals=3, padded=False):
     r"""A matrix as a LaTeX ``bmatrix``, entries rounded to `decimals` places.
 
     Parameters
     ----------
     M : array_like, shape (rows, cols)
     decimals : int, optional
+    padded : bool, optional
+        Leave a space between the brackets and the entries (the explorers' panels: their
+        MathJax draws a ``bmatrix``'s brackets against the digits).
 
     Returns
     -------
@@ -56,10 +59,14 @@ def matrix_latex(M, decimals=3):
     --------
     >>> matrix_latex([[1, 0.5], [0, 1]])
     '\\begin{bmatrix} 1 & 0.5 \\\\ 0 & 1 \\end{bmatrix}'
+    >>> matrix_latex([[1]], padded=True)
+    '\\left[\\;\\begin{matrix} 1 \\end{matrix}\\;\\right]'
     """
     m = np.atleast_2d(as_array(M, "M"))
-    rows = [" & ".join(row) for row in _entries(m, decimals)]
-    return r"\begin{bmatrix} " + r" \\ ".join(rows) + r" \end{bmatrix}"
+    rows = r" \\ ".join(" & ".join(row) for row in _entries(m, decimals))
+    if padded:
+        return r"\left[\;\begin{matrix} " + rows + r" \end{matrix}\;\right]"
+    return r"\begin{bmatrix} " + rows + r" \end{bmatrix}"
 
 
 def vector_latex(v, decimals=3, column=False):

@@ -9,9 +9,10 @@ import threading
 import numpy as np
 
 from .. import draw
+from . import _style
 
-__all__ = ["Explorer", "PlotterExplorer", "beside", "bind", "degree_sliders", "figure_3d",
-           "handle_comms_on_main_thread", "labelled", "pyvista_faces", "read_controls", "slider"]
+__all__ = ["Explorer", "PlotterExplorer", "align", "beside", "bind", "checkbox", "degree_sliders", "figure_3d",
+           "handle_comms_on_main_thread", "labelled", "panel", "pyvista_faces", "read_controls", "slider"]
 
 _COMM_MESSAGES = ("comm_open", "comm_msg", "comm_close")
 
@@ -152,12 +153,18 @@ def figure_3d(radius, title, size=4.3):
     ax = fig.add_subplot(projection="3d")
     fig.subplots_adjust(left=0, right=1, bottom=0.02, top=0.95)
     draw.setup_axes_3d(ax, radius=radius, title=title, box=False)
+    _style.style_axes(ax)
     return fig, ax
 
 
-def labelled(kind, description, label_width="80px", width="300px", **options):
-    """A control of ipywidgets class `kind` labelled `description`: the label `label_width`
-    wide, the whole control `width` wide; further `options` go to the class.
+def labelled(kind, description, label_width=None, width=None, body=None, **options):
+    """A control of ipywidgets class `kind` labelled `description`, the label shown whole.
+
+    The label is `label_width` wide (CSS; default :func:`._style.label_width` of the
+    description, so that it is never cut) and the whole control `width` (default: the label and
+    `body` pixels for the control itself, :data:`CONTROL_BODY` unless given; a given width too
+    small for the label and :data:`MIN_BODY` is widened; a menu's default body fits its longest
+    entry). Further `options` go to the class.
 
     Examples
     --------
@@ -165,35 +172,51 @@ def labelled(kind, description, label_width="80px", width="300px", **options):
     >>> menu = labelled(w.Dropdown, "mapping", options=["planar", "sphere"], width="260px")
     >>> menu.value, menu.style.description_width, menu.layout.width
     ('planar', '80px', '260px')
+    >>> labelled(w.FloatSlider, "oblique angle φ °").style.description_width
+    '146px'
     """
     import ipywidgets as w
 
+    label_width = label_width or _style.label_width(description)
+    label = _style.px(label_width)
+    if body is None and issubclass(kind, w.Dropdown) and options.get("options") is not None:
+        # a menu as wide as its longest entry (with room for its arrow)
+        entries = [o[0] if isinstance(o, tuple) else str(o) for o in options["options"]]
+        body = max(CONTROL_BODY, _style.px(_style.button_width(*entries)))
+    total = (label + (body or CONTROL_BODY) if width is None
+             else max(_style.px(width), label + MIN_BODY))
     return kind(description=description, style={"description_width": label_width},
-                layout=w.Layout(width=width), **options)
+                layout=w.Layout(width=f"{total}px"), **options)
+
+
+#: Pixels a slider's track and read-out (or a menu's box) take beside the label by default.
+CONTROL_BODY = 220
+#: The least room left for them when a width is given.
+MIN_BODY = 150
 
 
 def slider(description, value, low, high, step, on_change=None, *, kind=None,
-           label_width="80px", width="300px", continuous_update=True, **options):
+           label_width=None, width=None, body=None, continuous_update=True, **options):
     """A slider labelled `description` that follows the mouse (unless `continuous_update` is
     False: then it reports its value when released).
 
     The one slider factory of the explorers: `kind` is the ipywidgets class (default
-    ``FloatSlider``; ``IntSlider`` etc.), the description is `label_width` wide and the whole
-    slider `width` (:func:`labelled`); further `options` go to the class. With `on_change`,
-    the slider calls it when its value moves.
+    ``FloatSlider``; ``IntSlider`` etc.), the description `label_width` wide (default: wide
+    enough to show it whole) and the whole slider `width` (:func:`labelled`); further
+    `options` go to the class. With `on_change`, the slider calls it when its value moves.
 
     Examples
     --------
     >>> s = slider("k_a ambient", 0.2, 0, 1, 0.01)
     >>> type(s).__name__, s.value, s.max, s.step, s.style.description_width, s.layout.width
-    ('FloatSlider', 0.2, 1.0, 0.01, '80px', '300px')
+    ('FloatSlider', 0.2, 1.0, 0.01, '98px', '318px')
     >>> import ipywidgets as w
     >>> slider("depth", 2, 0, 6, 1, kind=w.IntSlider, width="340px").value
     2
     """
     import ipywidgets as w
 
-    control = labelled(kind or w.FloatSlider, description, label_width, width, value=value,
+    control = labelled(kind or w.FloatSlider, description, label_width, width, body, value=value,
                        min=low, max=high, step=step, continuous_update=continuous_update,
                        **options)
     if on_change is not None:
@@ -201,7 +224,46 @@ def slider(description, value, low, high, step, on_change=None, *, kind=None,
     return control
 
 
-def degree_sliders(on_change, label_width="80px", **specs):
+def checkbox(description, value=False):
+    """A check box with its description right of the box, no wider than both (ipywidgets'
+    default box is 300 px wide and indented by a label width, so two of them side by side
+    pushed a control column past its figure).
+
+    Examples
+    --------
+    >>> box = checkbox("convex hull", True)
+    >>> box.value, box.indent, box.layout.width
+    (True, False, 'auto')
+    """
+    import ipywidgets as w
+
+    return w.Checkbox(value=value, description=description, indent=False,
+                      layout=w.Layout(width="auto"))
+
+
+def align(controls):
+    """Line up the labelled `controls` of one column: the same label width (the widest one's)
+    and the same overall width (the widest control's, once its label is widened); returns
+    them.
+
+    Examples
+    --------
+    >>> a, b = slider("x", 0, 0, 1, 0.1), slider("shininess n", 0, 0, 1, 0.1, body=250)
+    >>> [(c.style.description_width, c.layout.width) for c in align([a, b])]
+    [('98px', '348px'), ('98px', '348px')]
+    """
+    controls = list(controls)
+    labels = [_style.px(c.style.description_width) for c in controls]
+    widest = max(labels, default=0)
+    total = max((_style.px(c.layout.width) - label + widest
+                 for c, label in zip(controls, labels)), default=0)
+    for control in controls:
+        control.style.description_width = f"{widest}px"
+        control.layout.width = f"{total}px"
+    return controls
+
+
+def degree_sliders(on_change, label_width=None, **specs):
     """Sliders in whole degrees, ``name=(description, value, min, max)``, each calling
     `on_change` when moved; returned in a dict by name.
 
@@ -211,9 +273,53 @@ def degree_sliders(on_change, label_width="80px", **specs):
     >>> sliders["yaw"].value, sliders["yaw"].step
     (30.0, 1.0)
     """
-    return {name: slider(description, value, low, high, 1, on_change, label_width=label_width,
-                         width="330px")
-            for name, (description, value, low, high) in specs.items()}
+    sliders = {name: slider(description, value, low, high, 1, on_change,
+                            label_width=label_width)
+               for name, (description, value, low, high) in specs.items()}
+    align(sliders.values())
+    return sliders
+
+
+#: What every panel's text is wrapped in: ipywidgets gives an HTML widget's text the line
+#: height of a control (28 px), which spaces a paragraph as if double-spaced.
+PANEL_OPEN = "<div style='line-height: 1.45'>"
+
+
+@functools.cache
+def _panel_class(math):
+    import ipywidgets as w
+    from traitlets import validate
+
+    class Panel(w.HTMLMath if math else w.HTML):
+        """An HTML (or HTMLMath) widget whose text is set in its normal line height."""
+
+        @validate("value")
+        def _tight(self, proposal):
+            value = proposal["value"]
+            if not value or value.startswith(PANEL_OPEN):
+                return value
+            return f"{PANEL_OPEN}{value}</div>"
+
+    Panel.__name__ = Panel.__qualname__ = "MathPanel" if math else "Panel"
+    return Panel
+
+
+def panel(value="", width=None, math=False):
+    """A text panel (an ``HTML`` widget, ``HTMLMath`` with `math`) `width` wide (CSS, default:
+    as wide as its text), its lines spaced as text rather than as controls.
+
+    Examples
+    --------
+    >>> info = panel("two<br>lines", width="300px")
+    >>> info.value.startswith(PANEL_OPEN), "two<br>lines" in info.value, info.layout.width
+    (True, True, '300px')
+    >>> type(panel(math=True)).__mro__[1].__name__
+    'HTMLMath'
+    """
+    import ipywidgets as w
+
+    layout = w.Layout(width=width) if width is not None else w.Layout()
+    return _panel_class(bool(math))(value=value, layout=layout)
 
 
 def read_controls(state, controls):
@@ -256,18 +362,26 @@ def bind(state, controls, then):
     return on_change
 
 
-def beside(canvas, controls):
-    """The figure on the left and the controls on the right (wrapping below on narrow screens).
+def beside(canvas, controls, align="center"):
+    """The figure on the left and the controls right next to it (wrapping below on narrow
+    screens).
+
+    The figure keeps its own width: ipympl lets its canvas grow to fill the row, which left a
+    gap of a few hundred pixels between a figure and its controls.
 
     Examples
     --------
     >>> import ipywidgets as w
-    >>> type(beside(w.Label("figure"), w.Label("controls"))).__name__
-    'HBox'
+    >>> box = beside(w.Label("figure"), w.Label("controls"))
+    >>> type(box).__name__, box.children[0].layout.flex
+    ('HBox', '0 0 auto')
     """
     import ipywidgets as w
 
-    return w.HBox([canvas, controls], layout=w.Layout(flex_flow="row wrap", align_items="center"))
+    if hasattr(canvas, "layout"):
+        canvas.layout.flex = "0 0 auto"
+    return w.HBox([canvas, controls], layout=w.Layout(flex_flow="row wrap", align_items=align,
+                                                      grid_gap="0 12px"))
 
 
 class Explorer:

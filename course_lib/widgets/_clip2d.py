@@ -3,7 +3,8 @@
 import numpy as np
 
 from .. import clipping, draw
-from ._base import Explorer
+from . import _style
+from ._base import Explorer, beside, labelled, panel
 from ._drag import DraggablePoints
 
 BOX_MIN = np.array([-1.0, -1.0])
@@ -30,8 +31,9 @@ def window_figure(title, figsize=(4.6, 4.6), regions=False):
         for x in xs:
             for y in ys:
                 code = clipping.outcode([x, y], BOX_MIN, BOX_MAX)
-                ax.text(x, y, format(code, "04b"), ha="center", va="center", fontsize=10,
+                ax.text(x, y, format(code, "04b"), ha="center", va="center", fontsize=_style.LABEL,
                         color="0.55", family="monospace", zorder=1)
+    _style.style_axes(ax)
     return fig, ax
 
 
@@ -40,8 +42,8 @@ def step_controls(on_step, count):
     cannot move (back at the first step, forward at the last) is greyed out."""
     import ipywidgets as w
 
-    slider = w.IntSlider(value=count - 1, min=0, max=max(count - 1, 0), description="step",
-                         continuous_update=True, layout=w.Layout(width="300px"))
+    slider = labelled(w.IntSlider, "step", value=count - 1, min=0, max=max(count - 1, 0),
+                      continuous_update=True)
     back = w.Button(icon="step-backward", tooltip="previous step", layout=w.Layout(width="40px"))
     forward = w.Button(icon="step-forward", tooltip="next step", layout=w.Layout(width="40px"))
     back.on_click(lambda _: setattr(slider, "value", max(slider.value - 1, slider.min)))
@@ -90,9 +92,8 @@ class StepExplorer(Explorer):
         count = self._step_count()
         self.step, controls = step_controls(self._on_step, count)
         self.step.value = self.state.step = count - 1
-        self.info = w.HTML(layout=w.Layout(width=info_width))
-        self.widget = w.HBox([self.fig.canvas, w.VBox([controls, self.info])],
-                             layout=w.Layout(flex_flow="row wrap"))
+        self.info = panel(width=info_width)
+        self.widget = beside(self.fig.canvas, w.VBox([controls, self.info]), align="flex-start")
         self._draw(self._scene())
 
     def _scene(self):  # pragma: no cover - every subclass overrides it

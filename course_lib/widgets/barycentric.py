@@ -16,7 +16,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import draw, texturing
-from ._base import Explorer, bind
+from . import _style
+from ._base import Explorer, bind, panel
 from ._drag import DraggablePoints
 
 __all__ = ["BarycentricExplorer", "COLORS", "State", "scene", "signed_area"]
@@ -184,29 +185,32 @@ class BarycentricExplorer(Explorer):
         self.markers = ax.scatter(np.zeros(4), np.zeros(4), s=[90, 90, 90, 120],
                                   edgecolors="0.1", linewidths=1.2, zorder=5)
         # the names as marker glyphs: a path drawn on each move costs far less than a text
-        self.labels = [ax.plot([], [], marker=f"$\\mathbf{{{name}}}$", ms=9, color="0.1", ls="none",
+        self.labels = [ax.plot([], [], marker=f"$\\mathbf{{{name}}}$", ms=_style.LABEL, color="0.1",
+                               ls="none",
                                zorder=6)[0] for name in (*NAMES, "P")]
-        self.area_labels = [ax.text(0, 0, "", fontsize=8, ha="center", va="center", zorder=4,
+        self.area_labels = [ax.text(0, 0, "", fontsize=_style.ANNOTATION, ha="center",
+                                    va="center", zorder=4,
                                     color="0.1") for _ in range(3)]
         bars = self.fig.add_axes((0.75, 0.47, 0.22, 0.43))
-        bars.set_title("weights λ", fontsize=10)
+        bars.set_title("weights λ")
         bars.axhline(0, color="0.3", lw=0.8)
         bars.axhline(1, color="0.7", lw=0.8, ls="--")
         bars.set(ylim=(-1.0, 1.6), xlim=(-0.6, 2.6), xticks=[0, 1, 2],
                  xticklabels=["λ_A", "λ_B", "λ_C"])
-        bars.tick_params(labelsize=8)
         self.bars = [Rectangle((k - 0.35, 0), 0.7, 0, color=COLORS[k], zorder=2)
                      for k in range(3)]
         for rect in self.bars:
             bars.add_patch(rect)
-        self.bar_values = [bars.text(k, 0, "", ha="center", fontsize=8, zorder=3)
+        self.bar_values = [bars.text(k, 0, "", ha="center", fontsize=_style.ANNOTATION, zorder=3)
                            for k in range(3)]
         swatch = self.fig.add_axes((0.75, 0.08, 0.22, 0.25))
         swatch.set(xticks=[], yticks=[], xlim=(0, 1), ylim=(0, 1))
-        swatch.set_title("interpolated colour at P", fontsize=9)
+        swatch.set_title("colour at P")
         self.swatch = Rectangle((0, 0), 1, 1, color="0.5")
         swatch.add_patch(self.swatch)
-        self.swatch_text = swatch.text(0.5, 0.5, "", ha="center", va="center", fontsize=8)
+        self.swatch_text = swatch.text(0.5, 0.5, "", ha="center", va="center",
+                                       fontsize=_style.ANNOTATION)
+        _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.fill, *self.patches, self.outline,
                                                self.markers, *self.labels, *self.area_labels,
                                                *self.bars, *self.bar_values, self.swatch,
@@ -214,9 +218,10 @@ class BarycentricExplorer(Explorer):
         self.drag = DraggablePoints(ax, np.vstack([self.state.triangle, self.state.point]),
                                     self._on_drag)
         self.mode = w.ToggleButtons(options=MODES, value=self.state.mode,
-                                    description="show", style={"button_width": "80px"})
+                                    description="show",
+                                    style={"button_width": _style.button_width(*MODES)})
         bind(self.state, {"mode": self.mode}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="700px"))
+        self.info = panel(width="700px")
         self.widget = w.VBox([self.fig.canvas, self.mode, self.info])
         self._draw(s)
 

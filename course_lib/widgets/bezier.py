@@ -13,7 +13,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import curves, draw, format as fmt
-from ._base import Explorer, bind
+from . import _style
+from ._base import Explorer, beside, bind, checkbox, panel, slider
 from ._drag import DraggablePoints
 
 __all__ = ["BezierExplorer", "MAX_POINTS", "State", "convex_hull", "scene"]
@@ -146,32 +147,34 @@ class BezierExplorer(Explorer):
         (self.tangent,) = ax.plot([], [], color="C3", lw=1.5, zorder=5, label="tangent at t")
         (self.point,) = ax.plot([], [], "o", color="C3", ms=8, zorder=6)
         (self.controls,) = ax.plot([], [], "o", color="0.2", ms=9, mec="white", zorder=7)
-        self.labels = [ax.text(0, 0, "", fontsize=8, color="0.25", zorder=8)
+        self.labels = [ax.text(0, 0, "", fontsize=_style.ANNOTATION, color="0.25", zorder=8)
                        for _ in range(MAX_POINTS)]
-        ax.legend(loc="lower center", fontsize=7, ncol=2)
+        _style.legend(ax, loc="lower center", ncol=2, handlelength=1.5, columnspacing=1.0,
+                      borderpad=0.3, labelspacing=0.25)
+        _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.hull, self.polygon, *self.levels,
                                                self.curve, self.halves, self.tangent,
                                                self.point, self.controls, *self.labels])
         self.drag = DraggablePoints(ax, self.state.points, self._on_drag,
                                     on_release=self.update)
-        self.t = w.FloatSlider(value=self.state.t, min=0, max=1, step=0.01, description="t",
-                               continuous_update=True, layout=w.Layout(width="300px"))
+        self.t = slider("t", self.state.t, 0, 1, 0.01)
         buttons = []
         for label, action in (("add point", self.add_point), ("remove point", self.remove_point),
                               ("subdivide at t", self.subdivide),
                               ("elevate degree", self.elevate)):
-            button = w.Button(description=label, layout=w.Layout(width="140px"))
+            button = w.Button(description=label, layout=w.Layout(
+                width=_style.button_width("subdivide at t", "elevate degree")))
             button.on_click(lambda _, action=action: action())
             buttons.append(button)
-        self.hull_box = w.Checkbox(value=self.state.show_hull, description="convex hull")
-        self.construction_box = w.Checkbox(value=self.state.show_construction,
-                                           description="de Casteljau")
+        self.hull_box = checkbox("convex hull", self.state.show_hull)
+        self.construction_box = checkbox("de Casteljau", self.state.show_construction)
         bind(self.state, {"t": self.t, "show_hull": self.hull_box,
                           "show_construction": self.construction_box}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="330px"))
+        self.info = panel(width="330px")
         controls = w.VBox([self.t, w.HBox(buttons[:2]), w.HBox(buttons[2:]),
-                           w.HBox([self.hull_box, self.construction_box]), self.info])
-        self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))
+                           w.HBox([self.hull_box, self.construction_box],
+                                  layout=w.Layout(grid_gap="0 16px")), self.info])
+        self.widget = beside(self.fig.canvas, controls)
         self._split = None
         self._draw(scene(self.state))
 

@@ -13,7 +13,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import curves, draw, format as fmt
-from ._base import Explorer
+from . import _style
+from ._base import Explorer, align, beside, labelled, panel, slider
 from ._drag import DraggablePoints
 
 __all__ = ["BSplineExplorer", "KNOT_PRESETS", "State", "knot_vector", "scene"]
@@ -158,12 +159,14 @@ class BSplineExplorer(Explorer):
         (self.affected,) = ax.plot([], [], color="C1", lw=4, alpha=0.8)
         (self.controls,) = ax.plot([], [], "o", color="0.2", ms=9, mec="white")
         (self.selected,) = ax.plot([], [], "o", color="C1", ms=13, mec="0.2", mew=1.5)
-        self.labels = [ax.text(0, 0, "", fontsize=8, color="0.25") for _ in range(MAX_POINTS)]
+        self.labels = [ax.text(0, 0, "", fontsize=_style.ANNOTATION, color="0.25")
+                       for _ in range(MAX_POINTS)]
         self.message = ax.text(3.0, 3.0, "", ha="center", va="center", color="#c62828",
-                               fontsize=9, wrap=True)
+                               fontsize=_style.ANNOTATION, wrap=True)
         basis_ax = self.fig.add_subplot(grid[1])
         basis_ax.set(ylim=(-0.05, 1.05), xlabel="t")
-        basis_ax.set_title("basis functions (selected one thick)", fontsize=9)
+        basis_ax.set_title("basis functions (selected one thick)")
+        _style.style_figure(self.fig)
         self.basis_ax = basis_ax
         self.basis = [basis_ax.plot([], [], lw=1.0, color="0.55")[0] for _ in range(MAX_POINTS)]
         self.span = basis_ax.axvspan(0, 0, color="C1", alpha=0.15)
@@ -174,26 +177,27 @@ class BSplineExplorer(Explorer):
                                                self.knot_marks])
         self.drag = DraggablePoints(ax, self.state.points, self._on_drag,
                                     on_press=self._on_pick, on_release=self.update)
-        self.degree = w.IntSlider(value=self.state.degree, min=1, max=5, description="degree")
-        self.knots = w.Dropdown(options=KNOT_PRESETS, value=self.state.knots, description="knots")
-        self.knot_text = w.Text(description="custom", continuous_update=False,
-                                layout=w.Layout(width="330px"))
-        self.point = w.IntSlider(value=self.state.selected, min=0,
-                                 max=len(self.state.points) - 1, description="point")
-        self.weight = w.FloatLogSlider(value=float(self.state.weights[self.state.selected]),
-                                       base=10, min=-1.3, max=1.0, step=0.01,
-                                       description="weight")
-        add = w.Button(description="add point", layout=w.Layout(width="120px"))
-        remove = w.Button(description="remove point", layout=w.Layout(width="120px"))
+        self.degree = slider("degree", self.state.degree, 1, 5, 1, kind=w.IntSlider)
+        self.knots = labelled(w.Dropdown, "knots", options=KNOT_PRESETS, value=self.state.knots)
+        self.knot_text = labelled(w.Text, "custom", continuous_update=False)
+        self.point = slider("point", self.state.selected, 0, len(self.state.points) - 1, 1,
+                            kind=w.IntSlider)
+        self.weight = labelled(w.FloatLogSlider, "weight",
+                               value=float(self.state.weights[self.state.selected]), base=10,
+                               min=-1.3, max=1.0, step=0.01)
+        align([self.degree, self.knots, self.knot_text, self.point, self.weight])
+        button = w.Layout(width=_style.button_width("add point", "remove point"))
+        add = w.Button(description="add point", layout=button)
+        remove = w.Button(description="remove point", layout=button)
         add.on_click(lambda _: self.add_point())
         remove.on_click(lambda _: self.remove_point())
         for control in (self.degree, self.knots, self.point, self.weight):
             control.observe(self._on_control, names="value")
         self.knot_text.observe(self._on_knot_text, names="value")
-        self.info = w.HTML(layout=w.Layout(width="330px"))
+        self.info = panel(width="330px")
         controls = w.VBox([self.degree, self.knots, self.knot_text, self.point, self.weight,
                            w.HBox([add, remove]), self.info])
-        self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))
+        self.widget = beside(self.fig.canvas, controls)
         self._draw(scene(self.state))
 
     def knot_example(self):

@@ -14,7 +14,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import clipping, draw, format as fmt, shapes, transforms, viewing
-from ._base import Explorer, bind, slider
+from . import _style
+from ._base import Explorer, align, bind, panel, slider
 
 __all__ = ["CameraExplorer", "PROJECTIONS", "State", "camera_matrices", "scene", "world"]
 
@@ -232,7 +233,7 @@ class CameraExplorer(Explorer):
         self.state = state or State()
         s = scene(self.state)
         self.fig = draw.figure(figsize=(8.4, 4.2))
-        world_ax = self.fig.add_axes((0.0, 0.0, 0.52, 1.0), projection="3d")
+        world_ax = self.fig.add_axes((0.0, 0.0, 0.52, 0.93), projection="3d")
         draw.setup_axes_3d(world_ax, radius=5.5, title="the world (WCS)", box=False,
                            elev=28, azim=-35)
         for line in _GRID:
@@ -245,25 +246,29 @@ class CameraExplorer(Explorer):
         image = self.fig.add_axes((0.57, 0.1, 0.4, 0.8))
         image.set(xlim=(-1, 1), ylim=(-1, 1), aspect="equal", xticks=[-1, 0, 1],
                   yticks=[-1, 0, 1], xlabel="x (CSS)", ylabel="y (CSS)")
-        image.set_title("what the camera sees", fontsize=10)
+        image.set_title("what the camera sees")
         image.set_facecolor("#f4f7fb")
         self.grid_lines = LineCollection([], colors="0.8", linewidths=0.6)
         self.image_faces = PolyCollection([], edgecolors="0.3", linewidths=0.4)
         image.add_collection(self.grid_lines)
         image.add_collection(self.image_faces)
         self.message = image.text(0, 0, "", ha="center", va="center", color="#c62828",
-                                  fontsize=9, wrap=True)
+                                  fontsize=_style.ANNOTATION, wrap=True)
         self.blitter = draw.Blitter(self.fig, [self.eye_point, *self.ecs_axes, self.volume,
                                                self.grid_lines, self.image_faces, self.message])
 
         self.controls = {name: slider(description, getattr(self.state, name), low, high, step,
-                                      label_width="70px", width="260px")
+                                      body=180)
                          for name, (description, low, high, step) in self.SLIDERS.items()}
         projection = w.ToggleButtons(options=PROJECTIONS, value=self.state.projection,
-                                     style={"button_width": "95px"})
+                                     style={"button_width": "auto"})   # each fits its name
         self.controls["projection"] = projection
         bind(self.state, self.controls, self._on_change)
         c = self.controls
+        for names in (("eye_x", "eye_y", "eye_z", "azimuth_deg", "elevation_deg"),
+                      ("up_x", "up_y", "up_z", "near", "far"),
+                      ("fov_deg", "half_size", "oblique_deg", "oblique_scale")):
+            align(c[name] for name in names)
         columns = w.HBox([
             w.VBox([w.HTML("<b>eye</b>"), c["eye_x"], c["eye_y"], c["eye_z"],
                     w.HTML("<b>direction of view</b>"), c["azimuth_deg"], c["elevation_deg"]]),
@@ -271,8 +276,9 @@ class CameraExplorer(Explorer):
                     w.HTML("<b>view volume</b>"), c["near"], c["far"]]),
             w.VBox([projection, c["fov_deg"], c["half_size"], c["oblique_deg"],
                     c["oblique_scale"]]),
-        ])
-        self.info = w.HTML()
+        ], layout=w.Layout(flex_flow="row wrap", grid_gap="0 8px"))
+        self.info = panel()
+        _style.style_figure(self.fig)
         self.widget = w.VBox([self.fig.canvas, columns, self.info])
         self._enable_projection_controls()
         self._draw(s)
@@ -280,14 +286,14 @@ class CameraExplorer(Explorer):
     #: The sliders, field of ``State`` -> (description, min, max, step).
     SLIDERS = {"eye_x": ("eye x", -8, 8, 0.1), "eye_y": ("eye y", -8, 8, 0.1),
                "eye_z": ("eye z", -2, 8, 0.1),
-               "azimuth_deg": ("gaze azim. °", -180, 180, 1),
-               "elevation_deg": ("gaze elev. °", -89, 89, 1),
+               "azimuth_deg": ("gaze azimuth °", -180, 180, 1),
+               "elevation_deg": ("gaze elevation °", -89, 89, 1),
                "up_x": ("up x", -1, 1, 0.1), "up_y": ("up y", -1, 1, 0.1),
                "up_z": ("up z", -1, 1, 0.1),
                "fov_deg": ("fov °", 10, 120, 1), "half_size": ("half size", 0.5, 6, 0.1),
                "near": ("near", 0.1, 6, 0.1), "far": ("far", 1, 25, 0.1),
-               "oblique_deg": ("oblique φ °", 0, 90, 1),
-               "oblique_scale": ("oblique k", 0, 1, 0.05)}
+               "oblique_deg": ("oblique angle φ °", 0, 90, 1),
+               "oblique_scale": ("oblique scale k", 0, 1, 0.05)}
 
     #: The sliders each projection reads (the others are greyed out: moving them would do
     #: nothing to the picture).

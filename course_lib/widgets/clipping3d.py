@@ -11,7 +11,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import clipping, draw, format as fmt, transforms, viewing
-from ._base import Explorer, beside, bind, degree_sliders, figure_3d, slider
+from . import _style
+from ._base import Explorer, align, beside, bind, degree_sliders, figure_3d, panel, slider
 
 __all__ = ["ClippingExplorer3D", "REGIONS", "State", "region_planes", "scene"]
 
@@ -139,11 +140,13 @@ class ClippingExplorer3D(Explorer):
         sliders = degree_sliders(None, turn=("turn °", self.state.turn_deg, -180, 180),
                                  tilt=("tilt °", self.state.tilt_deg, -90, 90))
         self.turn, self.tilt = sliders.values()
-        self.lift = slider("lift", self.state.lift, -2.5, 2.5, 0.05, width="330px")
-        self.region = w.ToggleButtons(options=REGIONS, value=self.state.region)
+        self.lift = slider("lift", self.state.lift, -2.5, 2.5, 0.05)
+        align([self.turn, self.tilt, self.lift])
+        self.region = w.ToggleButtons(options=REGIONS, value=self.state.region,
+                                      style={"button_width": _style.button_width(*REGIONS)})
         bind(self.state, {"region": self.region, "turn_deg": self.turn, "tilt_deg": self.tilt,
                           "lift": self.lift}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="340px"))
+        self.info = panel(width="340px")
         self.widget = beside(self.fig.canvas, w.VBox([self.region, self.turn, self.tilt,
                                                       self.lift, self.info]))
         self._draw(s)

@@ -5,6 +5,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import clipping, draw, format as fmt
+from . import _style
 from ._clip2d import BOX_MAX, BOX_MIN, StepExplorer, window_figure
 from ._drag import pseudocode_html
 
@@ -112,7 +113,7 @@ class CohenSutherlandExplorer(StepExplorer):
         (self.new_point,) = ax.plot([], [], "*", color="C3", ms=14, zorder=6)
         (self.ends,) = ax.plot(*np.array([self.state.p0, self.state.p1]).T, "o", color="C0",
                                ms=9, mec="white", zorder=7)
-        self.labels = [ax.text(0, 0, "", fontsize=9, family="monospace", zorder=8,
+        self.labels = [ax.text(0, 0, "", fontsize=_style.ANNOTATION, family="monospace", zorder=8,
                                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="0.7"))
                        for _ in range(2)]
         self.blitter = draw.Blitter(self.fig, [self.original, self.current, self.result,

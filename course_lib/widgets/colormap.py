@@ -18,7 +18,8 @@ from functools import lru_cache
 import numpy as np
 
 from .. import colormaps, draw, scivis
-from ._base import Explorer, bind
+from . import _style
+from ._base import Explorer, align, beside, bind, checkbox, labelled, panel
 
 __all__ = ["DATASETS", "State", "ColormapExplorer", "example_data", "print_ambiguity",
            "scene"]
@@ -177,30 +178,30 @@ class ColormapExplorer(Explorer):
 
         self.state = state or State()
         s = scene(self.state)
-        self.fig = draw.figure(figsize=(7.0, 5.8), dpi=72)
-        grid = self.fig.add_gridspec(4, 2, height_ratios=(3.0, 2.1, 0.28, 0.28), left=0.09,
-                                     right=0.98, bottom=0.08, top=0.95, hspace=0.3,
+        self.fig = draw.figure(figsize=(5.8, 4.9))
+        grid = self.fig.add_gridspec(4, 2, height_ratios=(3.0, 2.1, 0.28, 0.28), left=0.11,
+                                     right=0.98, bottom=0.1, top=0.95, hspace=0.35,
                                      wspace=0.12)
         extent = (-1, 1, -1, 1)
         color_ax = self.fig.add_subplot(grid[0, 0])
         self.color_image = color_ax.imshow(s["rgb"], origin="lower", extent=extent)
-        color_ax.set_title("the data in colour", fontsize=9)
+        color_ax.set_title("the data in colour")
         grey_ax = self.fig.add_subplot(grid[0, 1])
         self.grey_image = grey_ax.imshow(s["grey"], origin="lower", extent=extent,
                                          cmap="gray", vmin=0, vmax=1)
-        grey_ax.set_title("printed in greyscale", fontsize=9)
+        grey_ax.set_title("printed in greyscale")
         for ax in (color_ax, grey_ax):
             ax.set(xticks=[], yticks=[])
         ax = self.fig.add_subplot(grid[1, :])
-        ax.set(xlim=(0, 1), ylim=(0, 100), ylabel="lightness L*")
-        ax.tick_params(labelsize=7, labelbottom=False)
+        ax.set(xlim=(0, 1), ylim=(0, 100), ylabel="lightness L*", yticks=[0, 50, 100])
+        ax.tick_params(labelbottom=False)
         ax.grid(True, color="0.92")
         grey_l = colormaps.lightness("grey", SAMPLES)
-        ax.set_title("lightness L* along the map, drawn in the map's own colours", fontsize=9)
+        ax.set_title("lightness L* along the map, in the map's own colours")
         ax.plot(s["t"], grey_l, "--", color="0.55", lw=1, label="grey ramp (for reference)")
         self.line = LineCollection([], linewidths=4)
         ax.add_collection(self.line)
-        ax.legend(loc="upper left", fontsize=7)
+        _style.legend(ax, loc="upper left", borderpad=0.3, handlelength=1.5)
         strip_ax = self.fig.add_subplot(grid[2, :], sharex=ax)
         self.strip = strip_ax.imshow(s["colors"][None], aspect="auto", extent=(0, 1, 0, 1))
         strip_ax.set(yticks=[])
@@ -209,18 +210,19 @@ class ColormapExplorer(Explorer):
         self.grey_strip = grey_strip_ax.imshow(s["grey_strip"][None], aspect="auto",
                                                extent=(0, 1, 0, 1), cmap="gray", vmin=0, vmax=1)
         grey_strip_ax.set(yticks=[], xlabel="position t along the map (normalised data value)")
-        grey_strip_ax.tick_params(labelsize=7)
+        _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.color_image, self.grey_image, self.line,
                                                self.strip, self.grey_strip])
-        self.name = w.Dropdown(options=colormaps.COLORMAP_NAMES, value=self.state.name,
-                               description="map")
-        self.reverse = w.Checkbox(value=self.state.reverse, description="reversed")
-        self.data = w.Dropdown(options=DATASETS, value=self.state.data, description="data")
+        self.name = labelled(w.Dropdown, "map", options=colormaps.COLORMAP_NAMES,
+                             value=self.state.name)
+        self.reverse = checkbox("reversed", self.state.reverse)
+        self.data = labelled(w.Dropdown, "data", options=DATASETS, value=self.state.data)
+        align([self.name, self.data])
         bind(self.state, {"name": self.name, "reverse": self.reverse, "data": self.data},
              self.update)
-        self.info = w.HTML(layout=w.Layout(width="300px"))
+        self.info = panel(width="300px")
         controls = w.VBox([self.name, self.reverse, self.data, self.info])
-        self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))
+        self.widget = beside(self.fig.canvas, controls, align="flex-start")
         self._draw(s)
 
     def update(self):

@@ -13,7 +13,8 @@ import numpy as np
 
 from .. import draw, format as fmt, shapes, transforms
 from .._validate import as_choice
-from ._base import Explorer
+from . import _style
+from ._base import Explorer, beside, labelled, panel
 
 __all__ = ["ComposerExplorer", "OPERATIONS", "Operation", "State", "scene"]
 
@@ -187,9 +188,10 @@ class _Row:
         self.composer = composer
         self.kind = w.Dropdown(options=list(OPERATIONS), value=operation.kind,
                                layout=w.Layout(width="165px"))
-        self.sliders = [w.FloatSlider(step=0.05, continuous_update=True, readout_format=".2f",
-                                      style={"description_width": "32px"},
-                                      layout=w.Layout(width="215px")) for _ in range(3)]
+        names = [name for spec in OPERATIONS.values() for name in spec[0]]
+        self.sliders = [labelled(w.FloatSlider, "", _style.label_width(*names, minimum=32),
+                                 body=180, step=0.05, continuous_update=True,
+                                 readout_format=".2f") for _ in range(3)]
         self.up = w.Button(icon="arrow-up", tooltip="move up", layout=w.Layout(width="34px"))
         self.remove = w.Button(icon="times", tooltip="remove", layout=w.Layout(width="34px"))
         self._configure(operation.kind, operation.params)
@@ -267,30 +269,32 @@ class ComposerExplorer(Explorer):
             (line,) = ax.plot([], [], color="C0", lw=0.9, alpha=0.45)
             self.step_lines.append(line)
         for _ in range(MAX_OPERATIONS):
-            self.step_labels.append(ax.text(0, 0, "", color="C0", fontsize=9, ha="center",
+            self.step_labels.append(ax.text(0, 0, "", color="C0", fontsize=_style.ANNOTATION,
+                                            ha="center",
                                             va="center", weight="bold"))
         (self.other,) = ax.plot([], [], color="C1", lw=1.5, ls="--", label="other order")
         (self.result,) = ax.fill(SHAPE[:, 0], SHAPE[:, 1], facecolor=(0.12, 0.47, 0.71, 0.35),
                                  edgecolor="C0", lw=2.2, label="result")
-        ax.legend(loc="lower left", fontsize=8)
+        _style.legend(ax, loc="lower left", borderpad=0.3, labelspacing=0.25, handlelength=1.5)
+        _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [*self.step_lines, *self.step_labels, self.other,
                                                self.result])
 
         self.rows = []
         self.rows_box = w.VBox([])
         self.add_button = w.Button(description="add operation", icon="plus",
-                                   layout=w.Layout(width="150px"))
+                                   layout=w.Layout(width=_style.button_width("add operation__")))
         self.add_button.on_click(lambda _: self.add())
         self.reverse = w.ToggleButton(value=self.state.reverse,
                                       description="apply in reverse order", icon="exchange",
-                                      layout=w.Layout(width="200px"))
+                                      layout=w.Layout(
+                                          width=_style.button_width("apply in reverse order__")))
         self.reverse.observe(lambda _: self.refresh(), names="value")
-        self.info = w.HTML(value=s["text"])
+        self.info = panel(s["text"], width="500px")
         for op in self.state.operations:
             self._append_row(op)
         self.widget = w.VBox([self.rows_box, w.HBox([self.add_button, self.reverse]),
-                              w.HBox([self.fig.canvas, self.info],
-                                     layout=w.Layout(align_items="center"))])
+                              beside(self.fig.canvas, self.info)])
         self._draw(s)
 
     # --- list editing -----------------------------------------------------------------------

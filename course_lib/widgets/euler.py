@@ -11,7 +11,7 @@ import numpy as np
 
 from .. import draw, mesh
 from .._validate import as_choice
-from ._base import Explorer, beside, bind, figure_3d
+from ._base import Explorer, align, beside, bind, figure_3d, labelled, panel, slider
 
 __all__ = ["MESHES", "EulerExplorer", "State", "scene"]
 
@@ -99,11 +99,11 @@ class EulerExplorer(Explorer):
         s = scene(self.state)
         self.surface = draw.mesh_3d(self.ax, s["vertices"], s["faces"], linewidth=0.4)
         self.blitter = draw.Blitter(self.fig, [self.surface])
-        self.choice = w.Dropdown(options=list(MESHES), value=self.state.mesh, description="mesh")
-        self.refinement = w.IntSlider(value=self.state.refinement, min=0, max=3,
-                                      description="refine")
+        self.choice = labelled(w.Dropdown, "mesh", options=list(MESHES), value=self.state.mesh)
+        self.refinement = slider("refine", self.state.refinement, 0, 3, 1, kind=w.IntSlider)
+        align([self.choice, self.refinement])
         bind(self.state, {"mesh": self.choice, "refinement": self.refinement}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="360px"))
+        self.info = panel(width="360px")
         self.widget = beside(self.fig.canvas, w.VBox([self.choice, self.refinement, self.info]))
         self._draw(s)
 

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, transforms
-from ._base import Explorer, beside, bind, degree_sliders, figure_3d
+from ._base import Explorer, beside, bind, degree_sliders, figure_3d, panel
 from .quaternion import F_COLORS, F_FACES, F_VERTICES, LIGHT
 
 __all__ = ["GimbalExplorer", "State", "gimbal_frames", "scene"]
@@ -150,7 +150,7 @@ class GimbalExplorer(Explorer):
         self.blitter = draw.Blitter(self.fig, [self.mesh, *self.rings, *self.pivots, self.lost])
         self._set_lost(s)
 
-        sliders = degree_sliders(None, label_width="60px",
+        sliders = degree_sliders(None,
                                  yaw=("yaw °", self.state.yaw_deg, -180, 180),
                                  pitch=("pitch °", self.state.pitch_deg, -90, 90),
                                  roll=("roll °", self.state.roll_deg, -180, 180))
@@ -159,9 +159,9 @@ class GimbalExplorer(Explorer):
              self.update)
         legend = "<br>".join(f"<span style='color:{RING_COLORS[k]}'>&#9679;</span> "
                              f"{AXIS_NAMES[k]}" for k in range(3))
-        self.info = w.HTML(value=s["text"], layout=w.Layout(width="330px"))
+        self.info = panel(s["text"], width="330px")
         self.widget = beside(self.fig.canvas,
-                             w.VBox([*sliders.values(), w.HTML(legend), self.info]))
+                             w.VBox([*sliders.values(), panel(legend), self.info]))
 
     @staticmethod
     def _pivot_line(axis, k):

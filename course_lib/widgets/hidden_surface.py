@@ -11,7 +11,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import clipping, draw, shapes, viewing, visibility
-from ._base import Explorer, beside, bind, degree_sliders
+from . import _style
+from ._base import Explorer, beside, bind, checkbox, degree_sliders, panel
 
 __all__ = ["HiddenSurfaceExplorer", "State", "mesh", "scene"]
 
@@ -120,7 +121,7 @@ class HiddenSurfaceExplorer(Explorer):
         self.state = state or State()
         s = scene(self.state)
         self.fig = draw.figure(figsize=(7.0, 3.4))
-        world = self.fig.add_axes((0.0, 0.0, 0.5, 1.0), projection="3d")
+        world = self.fig.add_axes((0.0, 0.0, 0.5, 0.92), projection="3d")
         draw.setup_axes_3d(world, radius=1.9, title="back faces grey, seen from the side",
                            box=False, elev=25, azim=-5)
         self.mesh = draw.mesh_3d(world, VERTICES, FACES, edgecolor="0.35", linewidth=0.2)
@@ -132,17 +133,19 @@ class HiddenSurfaceExplorer(Explorer):
                                   vmin=0.6, vmax=1.0, extent=(0, SIZE, 0, SIZE),
                                   interpolation="nearest")
         self.fig.colorbar(self.depth, ax=image, fraction=0.046, pad=0.03, label="depth")
-        image.set_title("the depth buffer (dark = near)", fontsize=10)
+        image.set_title("the depth buffer (dark = near)")
         image.set(xticks=[], yticks=[])
         self.blitter = draw.Blitter(self.fig, [self.mesh, self.eye, self.sight, self.depth])
-        sliders = degree_sliders(None, label_width="70px",
-                                 azimuth=("camera az. °", self.state.azimuth_deg, -180, 180),
-                                 elevation=("camera el. °", self.state.elevation_deg, -89, 89))
+        _style.style_figure(self.fig)
+        sliders = degree_sliders(None,
+                                 azimuth=("camera azimuth °", self.state.azimuth_deg, -180, 180),
+                                 elevation=("camera elevation °", self.state.elevation_deg, -89,
+                                            89))
         self.azimuth, self.elevation = sliders.values()
-        self.cull = w.Checkbox(value=self.state.cull, description="cull back faces")
+        self.cull = checkbox("cull back faces", self.state.cull)
         bind(self.state, {"azimuth_deg": self.azimuth, "elevation_deg": self.elevation,
                           "cull": self.cull}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="330px"))
+        self.info = panel(width="330px")
         self.widget = w.VBox([self.fig.canvas, beside(w.VBox([*sliders.values(), self.cull]),
                                                       self.info)])
         self._draw(s)

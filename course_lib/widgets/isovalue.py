@@ -31,7 +31,9 @@ import numpy as np
 
 from .. import draw, scivis
 from .._validate import as_choice
-from ._base import Explorer, PlotterExplorer, bind, pyvista_faces
+from . import _style
+from ._base import (Explorer, PlotterExplorer, align, beside, bind,
+                    checkbox, labelled, panel, pyvista_faces, slider)
 
 __all__ = ["FIELDS", "IsolineExplorer", "IsosurfaceExplorer", "State", "State3D", "VOLUMES",
            "alternative_segments", "classic_marching_cubes", "example_data", "example_volume",
@@ -211,11 +213,13 @@ def _draw_case_table(ax):
             ax.plot(*(origin + np.array([mids[a], mids[b]])).T, color="#1f5fbf", lw=1.6)
         for a, b in scivis.SQUARE_SADDLES_CENTRE_ABOVE.get(case, ()):
             ax.plot(*(origin + np.array([mids[a], mids[b]])).T, "--", color="#1f5fbf", lw=1)
-        ax.text(*(origin + [0.5, 0.5]), str(case), ha="center", va="center", fontsize=8,
+        ax.text(*(origin + [0.5, 0.5]), str(case), ha="center", va="center",
+                fontsize=_style.ANNOTATION,
                 color="0.1", weight="bold")
     ax.set(xlim=(-0.3, 5.8), ylim=(-0.3, 5.8), aspect="equal")
     ax.set_axis_off()
-    ax.set_title("the 16 cases (dot = above)\ndashed: the saddles' other pairing", fontsize=8)
+    ax.set_title("the 16 cases (dot = above)\ndashed: the saddles'\nother pairing",
+                 fontsize=_style.ANNOTATION)
     return np.array(tiles)
 
 
@@ -245,13 +249,13 @@ class IsolineExplorer(Explorer):
 
         self.state = state or State()
         s = scene(self.state)
-        self.fig = draw.figure(figsize=(7.4, 5.0), dpi=72)
-        grid = self.fig.add_gridspec(1, 2, width_ratios=(3.3, 1.25), left=0.07, right=0.99,
-                                     bottom=0.09, top=0.93, wspace=0.04)
+        self.fig = draw.figure(figsize=(6.6, 4.1))
+        grid = self.fig.add_gridspec(1, 2, width_ratios=(3.0, 1.55), left=0.085, right=0.995,
+                                     bottom=0.11, top=0.93, wspace=0.04)
         ax = self.fig.add_subplot(grid[0])
         ax.set(xlim=(-1.08, 1.08), ylim=(-1.08, 1.08), aspect="equal", xlabel="x", ylabel="y")
-        ax.set_title("marching squares", fontsize=10)
-        ax.tick_params(labelsize=7)
+        ax.set_title("marching squares")
+        _style.style_axes(ax)
         self.ax = ax
         self.image = ax.imshow(s["field"].values, origin="lower", cmap="viridis", alpha=0.35,
                                extent=(-1, 1, -1, 1), interpolation="bilinear", zorder=0)
@@ -270,9 +274,13 @@ class IsolineExplorer(Explorer):
         (self.above,) = ax.plot([], [], "o", ms=5, color="0.1", zorder=6)
         (self.below,) = ax.plot([], [], "o", ms=5, mfc="white", mec="0.1", mew=0.9, zorder=6)
         # the case numbers as markers shaped like digits, one collection per case: far cheaper
-        # to redraw than hundreds of text artists (each text is laid out on every blit)
+        # to redraw than hundreds of text artists (each text is laid out on every blit). A
+        # marker's size is its glyphs' height (one digit) or width (two): 0.75 of the
+        # annotation size gives digits as tall as those of annotation-sized text.
+        digit = 0.75 * _style.ANNOTATION
         self.labels = {k: ax.scatter(np.zeros(0), np.zeros(0), marker=f"${k}$",
-                                     s=(30 if k < 10 else 55), color="#7b1fa2", linewidths=0,
+                                     s=(digit ** 2 if k < 10 else (1.5 * digit) ** 2),
+                                     color="#7b1fa2", linewidths=0,
                                      zorder=7) for k in range(1, 15)}
         legend_ax = self.fig.add_subplot(grid[1])
         tiles = _draw_case_table(legend_ax)
@@ -282,19 +290,17 @@ class IsolineExplorer(Explorer):
                                                self.alternative, self.segments, self.above,
                                                self.below, *self.labels.values(),
                                                self.tiles])
-        self.level = w.FloatSlider(value=self.state.level, step=0.005, description="isovalue c",
-                                   continuous_update=True, readout_format=".3f",
-                                   layout=w.Layout(width="330px"))
-        self.field = w.Dropdown(options=FIELDS, value=self.state.field, description="field")
-        self.size = w.IntSlider(value=self.state.size, min=4, max=MAX_SIZE,
-                                description="samples", layout=w.Layout(width="330px"))
-        self.cases_box = w.Checkbox(value=self.state.show_cases, description="case numbers")
+        self.level = slider("isovalue c", self.state.level, 0, 10, 0.005, readout_format=".3f")
+        self.field = labelled(w.Dropdown, "field", options=FIELDS, value=self.state.field)
+        self.size = slider("samples", self.state.size, 4, MAX_SIZE, 1, kind=w.IntSlider)
+        align([self.level, self.field, self.size])
+        self.cases_box = checkbox("case numbers", self.state.show_cases)
         bind(self.state, {"level": self.level}, self.update)
         for control in (self.field, self.size, self.cases_box):
             control.observe(self._on_layout, names="value")
-        self.info = w.HTML(layout=w.Layout(width="330px"))
+        self.info = panel(width="330px")
         controls = w.VBox([self.level, self.field, self.size, self.cases_box, self.info])
-        self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))
+        self.widget = beside(self.fig.canvas, controls)
         self._level_range()
         self._static(s)
         self._draw(s)
@@ -569,25 +575,24 @@ class IsosurfaceExplorer(PlotterExplorer):
         self.box = pv.Box(bounds=(-1, 1, -1, 1, -1, 1)).outline()
         self.plotter.add_mesh(self.box, color="#9e9e9e", line_width=1)
         self.image = w.Image(format="jpeg", layout=w.Layout(width="420px"))
-        self.volume = w.Dropdown(options=VOLUMES, value=self.state.volume, description="volume")
-        self.level = w.FloatSlider(value=self.state.level, description="isovalue",
-                                   readout_format=".3f", layout=w.Layout(width="330px"))
+        self.volume = labelled(w.Dropdown, "volume", options=VOLUMES, value=self.state.volume)
+        self.level = slider("isovalue", self.state.level, 0, 10, 0.1, readout_format=".3f")
         self.table = w.ToggleButtons(options=TABLES, value=self.state.table,
+                                     style={"button_width": _style.button_width(*TABLES)},
                                      tooltips=("our table: ambiguous faces by the asymptotic "
                                                "decider", "each cube decides alone"))
-        self.azimuth = w.FloatSlider(value=self.state.azimuth, min=-180, max=180, step=5,
-                                     description="view az. °", layout=w.Layout(width="330px"))
-        self.elevation = w.FloatSlider(value=self.state.elevation, min=-80, max=80, step=5,
-                                       description="view el. °", layout=w.Layout(width="330px"))
+        self.azimuth = slider("view azimuth °", self.state.azimuth, -180, 180, 5)
+        self.elevation = slider("view elevation °", self.state.elevation, -80, 80, 5)
+        align([self.volume, self.level, self.azimuth, self.elevation])
         self._level_range()
         self.volume.observe(self._on_volume, names="value")
         self._on_change = bind(self.state, {"level": self.level, "table": self.table,
                                             "azimuth": self.azimuth,
                                             "elevation": self.elevation}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="340px"))
-        self.widget = w.HBox([self.image, w.VBox([self.volume, self.level, self.table,
-                                                  self.azimuth, self.elevation, self.info])],
-                             layout=w.Layout(flex_flow="row wrap"))
+        self.info = panel(width="340px")
+        self.widget = beside(self.image, w.VBox([self.volume, self.level, self.table,
+                                                 self.azimuth, self.elevation, self.info]),
+                             align="flex-start")
         self._draw(s)
 
     def _level_range(self):

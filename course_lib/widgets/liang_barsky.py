@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import clipping, draw, format as fmt
+from . import _style
 from ._clip2d import BOX_MAX, BOX_MIN, LIMITS, StepExplorer
 from ._drag import pseudocode_html
 
@@ -144,8 +145,9 @@ class LiangBarskyExplorer(StepExplorer):
         (self.enter_t,) = line.plot([], [], ">", color=ENTER, ms=9)
         (self.leave_t,) = line.plot([], [], "<", color=LEAVE, ms=9)
         # left and right labelled above the line, bottom and top below it
-        self.t_labels = [line.text(0, 0, "", fontsize=8, ha="center",
+        self.t_labels = [line.text(0, 0, "", fontsize=_style.ANNOTATION, ha="center",
                                    va="bottom" if k < 2 else "top") for k in range(4)]
+        _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.line, self.segment, self.kept, self.result,
                                                self.enter_pts, self.leave_pts, self.ends,
                                                self.interval, self.enter_t, self.leave_t,

@@ -13,7 +13,8 @@ import numpy as np
 
 from .. import draw, mesh
 from .._validate import as_choice
-from ._base import Explorer, beside, bind, figure_3d
+from . import _style
+from ._base import Explorer, align, beside, bind, figure_3d, labelled, panel, slider
 
 __all__ = ["MESHES", "HalfEdgeExplorer", "State", "scene"]
 
@@ -150,7 +151,7 @@ class HalfEdgeExplorer(Explorer):
         self.surface = draw.mesh_3d(self.ax, s["vertices"], s["faces"], facecolor="#dde6f0",
                                     edgecolor="0.35", alpha=0.35, zorder=1)
         (self.points,) = self.ax.plot(*s["vertices"].T, "o", color="0.3", ms=3)
-        self.labels = [self.ax.text(*p * 1.12, str(i), fontsize=7, color="0.25")
+        self.labels = [self.ax.text(*p * 1.12, str(i), fontsize=_style.ANNOTATION, color="0.25")
                        for i, p in enumerate(s["vertices"])]
         self.face = draw.mesh_3d(self.ax, np.zeros((3, 3)), [[0, 1, 2]], facecolor="#f5a623",
                                  edgecolor="none", alpha=0.45, zorder=2)
@@ -162,20 +163,23 @@ class HalfEdgeExplorer(Explorer):
             self.lines[key].set_zorder(5)
         (self.head,) = self.ax.plot([], [], [], "o", color="#d0021b", ms=6, zorder=6,
                                     label="head of current")
-        self.ax.legend(loc="upper left", fontsize=7, frameon=False)
+        _style.legend(self.ax, loc="upper left", frameon=False, borderaxespad=0,
+                      handlelength=1.5, labelspacing=0.25)
         self.blitter = draw.Blitter(self.fig, [self.face, *self.lines.values(), self.head])
-        self.choice = w.Dropdown(options=list(MESHES), value=self.state.mesh, description="mesh")
-        self.index = w.BoundedIntText(value=self.state.half_edge, min=0,
-                                      max=self.he.n_half_edges - 1, description="half-edge")
+        self.choice = labelled(w.Dropdown, "mesh", options=list(MESHES), value=self.state.mesh)
+        self.index = labelled(w.BoundedIntText, "half-edge", value=self.state.half_edge, min=0,
+                              max=self.he.n_half_edges - 1)
+        align([self.choice, self.index])
         self.buttons = {}
         for name in ("previous", "next", "opposite"):
-            button = w.Button(description=name, layout=w.Layout(width="90px"))
+            button = w.Button(description=name, layout=w.Layout(
+                width=_style.button_width("previous", "next", "opposite")))
             button.on_click(lambda _, name=name: self.step(name))
             self.buttons[name] = button
         self.choice.observe(self._on_mesh, names="value")
         bind(self.state, {"half_edge": self.index}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="380px"))
-        self.table = w.HTML()
+        self.info = panel(width="380px")
+        self.table = panel()
         controls = w.VBox([self.choice, self.index, w.HBox(list(self.buttons.values())),
                            self.info, self.table])
         self.widget = beside(self.fig.canvas, controls)
@@ -196,7 +200,7 @@ class HalfEdgeExplorer(Explorer):
         self.points.set_data_3d(*s["vertices"].T)
         for label in self.labels:
             label.remove()
-        self.labels = [self.ax.text(*p * 1.12, str(i), fontsize=7, color="0.25")
+        self.labels = [self.ax.text(*p * 1.12, str(i), fontsize=_style.ANNOTATION, color="0.25")
                        for i, p in enumerate(s["vertices"])]
         self.state.half_edge = 0
         with self.index.hold_trait_notifications(), self.index.hold_sync():

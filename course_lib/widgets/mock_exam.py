@@ -20,7 +20,8 @@ import numpy as np
 
 from .. import draw, progress
 from ..exercises import mock
-from ._base import Explorer
+from . import _style
+from ._base import Explorer, labelled
 
 __all__ = ["MockExamWidget", "State", "scene"]
 
@@ -160,7 +161,7 @@ class MockExamWidget(Explorer):
         self.saved = None
         self.shown = {}
 
-        self.fig = draw.figure(figsize=(4.2, 2.3), dpi=90)
+        self.fig = draw.figure(figsize=(4.2, 2.6))
         self.ax = self.fig.add_subplot()
         self._build_bars()
 
@@ -175,8 +176,8 @@ class MockExamWidget(Explorer):
         self.next_button = w.Button(description="Next question", icon="arrow-right")
         self.feedback_out = w.Output()
         self.status = w.HTML()
-        self.seed_box = w.BoundedIntText(value=int(seed), min=0, max=10**9, description="seed",
-                                         layout=w.Layout(width="170px"))
+        self.seed_box = labelled(w.BoundedIntText, "seed", label_width="40px", body=110,
+                                 value=int(seed), min=0, max=10**9)
         self.new_button = w.Button(description="New exam", icon="refresh")
         self.submit_button.on_click(lambda _: self.submit_answer())
         self.next_button.on_click(lambda _: self.next())
@@ -204,10 +205,13 @@ class MockExamWidget(Explorer):
         ax.set_ylabel("questions")
         ax.set_ylim(0, max(s["asked"]) + 0.6)
         ax.yaxis.get_major_locator().set_params(integer=True)
-        ax.legend(loc="upper right", fontsize=7, ncols=3, frameon=False)
+        # the legend above the axes, where no bar can hide it
+        _style.legend(ax, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncols=3,
+                      frameon=False, borderaxespad=0.1, handlelength=1.2, columnspacing=1.0)
         self.score_text = ax.text(0.01, 0.97, s["score"], transform=ax.transAxes, va="top",
-                                  fontsize=9)
-        self.fig.subplots_adjust(left=0.13, right=0.98, bottom=0.2, top=0.97)
+                                  fontsize=_style.LABEL)
+        _style.style_axes(ax)
+        self.fig.subplots_adjust(left=0.14, right=0.98, bottom=0.2, top=0.86)
         self.blitter = draw.Blitter(self.fig, [*self.right_bars, *self.wrong_bars,
                                                self.score_text])
 

@@ -23,7 +23,8 @@ import numpy as np
 
 from .. import draw, shading
 from .._validate import as_choice
-from ._base import Explorer, bind, slider
+from . import _style
+from ._base import Explorer, bind, panel, slider
 
 __all__ = ["KINDS", "MAX_SAMPLES", "OcclusionExplorer", "State", "convergence", "exact",
            "floor_points", "occluders", "ray_visibility", "scene"]
@@ -270,57 +271,55 @@ class OcclusionExplorer(Explorer):
         s = scene(self.state)
         self.fig = draw.figure(figsize=(8.4, 3.3))
         extent = EXTENT
-        ax_ao = self.fig.add_axes((0.055, 0.14, 0.24, 0.72))
-        ax_err = self.fig.add_axes((0.415, 0.14, 0.24, 0.72))
-        ax_conv = self.fig.add_axes((0.78, 0.16, 0.205, 0.7))
+        ax_ao = self.fig.add_axes((0.075, 0.15, 0.215, 0.7))
+        ax_err = self.fig.add_axes((0.43, 0.15, 0.215, 0.7))
+        ax_conv = self.fig.add_axes((0.8, 0.15, 0.185, 0.7))
         grey = matplotlib.colormaps["gray"].with_extremes(bad="#c9a66b")
         magma = matplotlib.colormaps["magma"].with_extremes(bad="#c9a66b")
         self.ao_image = ax_ao.imshow(s["estimate"], origin="lower", extent=extent, cmap=grey,
                                      vmin=0, vmax=1, interpolation="nearest")
         self.err_image = ax_err.imshow(np.abs(s["std_error"]), origin="lower", extent=extent,
                                        cmap=magma, vmin=0, vmax=0.5, interpolation="nearest")
-        for image, left in ((self.ao_image, 0.302), (self.err_image, 0.662)):
-            bar = self.fig.colorbar(image, cax=self.fig.add_axes((left, 0.14, 0.012, 0.72)))
-            bar.ax.tick_params(labelsize=7)
+        for image, left in ((self.ao_image, 0.297), (self.err_image, 0.652)):
+            self.fig.colorbar(image, cax=self.fig.add_axes((left, 0.15, 0.012, 0.7)))
         self.outlines = []
         for ax in (ax_ao, ax_err):
             ax.set(xlabel="x", ylabel="y", xlim=(-0.12, 3.0), ylim=(-1.5, 1.5))
-            ax.tick_params(labelsize=7)
-            ax.xaxis.label.set_size(8)
-            ax.yaxis.label.set_size(8)
             wall = ax.axvspan(-0.12, 0.0, color="#8d6e63")
             (x0, x1), (y0, y1), _ = BOX
             box = Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, ec="#c62828", lw=1.2)
             ax.add_patch(box)
             self.outlines.append((wall, box))
-        self.ao_title = ax_ao.set_title("", fontsize=9)
-        self.err_title = ax_err.set_title("", fontsize=9)
+        self.ao_title = ax_ao.set_title("")
+        self.err_title = ax_err.set_title("")
         ax_conv.set(xscale="log", yscale="log", xlim=(1, MAX_SAMPLES), ylim=(2e-3, 0.7),
                     xlabel="rays per point k")
-        ax_conv.xaxis.label.set_size(8)
-        ax_conv.tick_params(labelsize=7)
-        ax_conv.set_title("noise against k (log-log)", fontsize=9)
+        ax_conv.set_title("noise vs k (log-log)")
         k = s["convergence"]["k"]
         ax_conv.plot(k, s["convergence"]["bound"], "--", color="0.5", lw=1,
                      label="bound 1/(2√k)")
         (self.se_line,) = ax_conv.plot([], [], color="C0", lw=1.5, label="mean estimated SE")
         (self.rms_line,) = ax_conv.plot([], [], color="C3", lw=1.5, label="RMS error vs exact")
         self.marker = ax_conv.axvline(k[0], color="0.2", lw=0.8)
-        ax_conv.legend(fontsize=6.5, loc="lower left")
+        _style.legend(ax_conv, loc="lower left", handlelength=1.2, borderpad=0.3,
+                      labelspacing=0.2, borderaxespad=0.3)
+        _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.ao_image, self.err_image, self.ao_title,
                                                self.err_title, self.se_line, self.rms_line,
                                                self.marker,
                                                *[a for pair in self.outlines for a in pair]])
-        self.samples = slider("rays k", self.state.samples, 1, MAX_SAMPLES, 1, kind=w.IntSlider,
-                              label_width="60px", width="420px")
+        self.samples = slider("rays per point k", self.state.samples, 1, MAX_SAMPLES, 1,
+                              kind=w.IntSlider, body=300)
         self.kind = w.ToggleButtons(options=KINDS, value=self.state.kind,
-                                    style={"button_width": "110px"})
-        self.seed = slider("seed", self.state.seed, 0, 9, 1, kind=w.IntSlider, label_width="60px",
-                           width="250px", continuous_update=False)
+                                    style={"button_width": _style.button_width(*KINDS)})
+        self.seed = slider("seed", self.state.seed, 0, 9, 1, kind=w.IntSlider, body=170,
+                           continuous_update=False)
         bind(self.state, {"samples": self.samples, "kind": self.kind, "seed": self.seed},
              self.update)
-        self.info = w.HTML(layout=w.Layout(width="760px"))
-        self.widget = w.VBox([self.fig.canvas, w.HBox([self.samples, self.seed]), self.kind,
+        self.info = panel(width="760px")
+        self.widget = w.VBox([self.fig.canvas, w.HBox([self.samples, self.seed],
+                                                      layout=w.Layout(flex_flow="row wrap")),
+                              self.kind,
                               self.info])
         self._draw(s)
 

@@ -25,7 +25,8 @@ import numpy as np
 
 from .. import draw, shading, viewing
 from .._validate import as_choice
-from ._base import Explorer, bind, degree_sliders, labelled, slider
+from . import _style
+from ._base import Explorer, align, beside, bind, degree_sliders, labelled, panel, slider
 
 __all__ = ["MODELS", "PhongExplorer", "State", "interpolation_buffers", "light_direction",
            "scene", "sphere_normals"]
@@ -277,7 +278,7 @@ class PhongExplorer(Explorer):
         s = scene(self.state)
         # every picture is shown at its own pixel size (90 dpi): no resampling, and few pixels
         # for ipympl to encode on each move (that encoding dominates the update time)
-        width, height = 600, 350
+        width, height = 600, 368
         self.fig = draw.figure(figsize=(width / 90, height / 90), dpi=90)
         ext = (-EXTENT, EXTENT, -EXTENT, EXTENT)
         self.images = {}
@@ -286,10 +287,10 @@ class PhongExplorer(Explorer):
         layout = {"total": (8, top), "ambient": (160, top), "diffuse": (312, top),
                   "specular": (464, top), "flat": (60, bottom), "gouraud": (252, bottom),
                   "phong": (444, bottom)}
-        titles = {"total": "I = sum of the terms",
-                  "ambient": "$I_e + I_g$: emission + ambient",
-                  "diffuse": "$I_d$: diffuse",
-                  "specular": "$I_s$: specular",
+        titles = {"total": "$I$\nsum of the terms",
+                  "ambient": "$I_e + I_g$\nemission + ambient",
+                  "diffuse": "$I_d$\ndiffuse",
+                  "specular": "$I_s$\nspecular",
                   "flat": "flat shading", "gouraud": "Gouraud shading",
                   "phong": "Phong shading"}
         for name, (x, y) in layout.items():
@@ -298,21 +299,25 @@ class PhongExplorer(Explorer):
             ax.set(xticks=[], yticks=[])
             for spine in ax.spines.values():
                 spine.set_visible(False)
-            ax.set_title(titles[name], fontsize=8.5 if name != "total" else 9.5, pad=3)
+            ax.set_title(titles[name], fontsize=_style.ANNOTATION, pad=3, linespacing=1.1)
             extent = ext if side == SIZE else None
             self.images[name] = ax.imshow(s[name], origin="lower", extent=extent,
                                           interpolation="nearest")
             self.axes[name] = ax
         for x, sign in ((148, "="), (300, "+"), (452, "+")):
-            self.fig.text(x / width, (top + SIZE / 2) / height, sign, fontsize=16, ha="center",
+            self.fig.text(x / width, (top + SIZE / 2) / height, sign, fontsize=_style.SYMBOL,
+                          ha="center",
                           va="center", color="0.3")
         self.fig.text(0.5, (bottom + m + 26) / height,
                       "the same model on a sphere mesh: what is interpolated?",
-                      fontsize=9, ha="center", color="0.3", style="italic")
+                      fontsize=_style.LABEL, ha="center", color="0.3", style="italic")
         big = self.axes["total"]
         (self.sun,) = big.plot([], [], marker="*", ms=14, mec="0.2", mew=0.8, ls="none")
         (self.peak,) = big.plot([], [], "+", color="0.2", ms=9, mew=1.2)
-        self.model_label = big.text(-1.02, -1.04, "", fontsize=8, color="0.25")
+        # under the picture, not on the sphere
+        self.model_label = big.text(0.5, -0.03, "", transform=big.transAxes, ha="center",
+                                    va="top", fontsize=_style.ANNOTATION, color="0.25",
+                                    clip_on=False)
         self.blitter = draw.Blitter(self.fig, [*self.images.values(), self.sun, self.peak,
                                                self.model_label])
 
@@ -323,13 +328,13 @@ class PhongExplorer(Explorer):
         self.shininess = labelled(w.FloatLogSlider, "shininess n", value=st.shininess, base=2,
                                   min=0, max=9, step=0.1)
         self.emission = slider("emission", st.emission, 0, 1, 0.01)
-        sliders = degree_sliders(None, azimuth=("light az. °", st.light_azimuth, -180, 180),
-                                 elevation=("light el. °", st.light_elevation, -89, 89))
+        sliders = degree_sliders(None, azimuth=("light azimuth °", st.light_azimuth, -180, 180),
+                                 elevation=("light elevation °", st.light_elevation, -89, 89))
         self.azimuth, self.elevation = sliders["azimuth"], sliders["elevation"]
         self.light_color = labelled(w.ColorPicker, "light", value=st.light_color, concise=False)
         self.color = labelled(w.ColorPicker, "object", value=st.color)
         self.model = w.ToggleButtons(options=MODELS, value=st.model,
-                                     style={"button_width": "110px"})
+                                     style={"button_width": _style.button_width(*MODELS)})
         self.segments = slider("mesh segments", st.segments, 4, 32, 2, kind=w.IntSlider,
                                continuous_update=False)
         bind(st, {"ka": self.ka, "kd": self.kd, "ks": self.ks, "shininess": self.shininess,
@@ -337,13 +342,14 @@ class PhongExplorer(Explorer):
                   "light_elevation": self.elevation, "light_color": self.light_color,
                   "color": self.color, "model": self.model, "segments": self.segments},
              self.update)
-        self.info = w.HTML(layout=w.Layout(width="330px"))
-        column1 = w.VBox([self.ka, self.kd, self.ks, self.shininess, self.emission])
-        column2 = w.VBox([self.azimuth, self.elevation, self.light_color, self.color,
-                          self.segments])
-        self.widget = w.VBox([w.HBox([self.fig.canvas, w.VBox([self.model, self.info])],
-                                     layout=w.Layout(flex_flow="row wrap")),
-                              w.HBox([column1, column2], layout=w.Layout(flex_flow="row wrap"))])
+        self.info = panel(width="330px")
+        column1 = w.VBox(align([self.ka, self.kd, self.ks, self.shininess, self.emission]))
+        column2 = w.VBox(align([self.azimuth, self.elevation, self.light_color, self.color,
+                                self.segments]))
+        self.widget = w.VBox([beside(self.fig.canvas, w.VBox([self.model, self.info]),
+                                     align="flex-start"),
+                              w.HBox([column1, column2], layout=w.Layout(flex_flow="row wrap",
+                                                                         grid_gap="0 12px"))])
         self._draw(s)
 
     def update(self):

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, format as fmt, quaternions, shapes
-from ._base import Explorer, beside, bind, degree_sliders, figure_3d
+from ._base import Explorer, beside, bind, degree_sliders, figure_3d, panel
 
 __all__ = ["QuaternionExplorer", "State", "axis_from_angles", "readout", "scene"]
 
@@ -117,7 +117,7 @@ def readout(n, theta, q, m):
         f"<i>θ</i> = {fmt.number(np.degrees(theta), 1)}°<br>"
         f"<i>q</i> = (cos <sup>θ</sup>&frasl;<sub>2</sub>, sin <sup>θ</sup>&frasl;<sub>2</sub> "
         f"<i>n̂</i>) = (cos {half}°, sin {half}° <i>n̂</i>)<br>"
-        f"<i>q</i> = (<i>s, x, y, z</i>) = {fmt.vector_html(q)}, "
+        f"<i>q</i> = (<i>s, x, y, z</i>) = {fmt.vector_html(q)}<br>"
         f"‖<i>q</i>‖ = {fmt.number(quaternions.norm(q))}<br>"
         f"<i>R<sub>q</sub></i> = {fmt.matrix_html(m)}"
     )
@@ -159,13 +159,13 @@ class QuaternionExplorer(Explorer):
 
         sliders = degree_sliders(
             None,
-            azimuth=("axis azim. °", self.state.azimuth_deg, -180, 180),
-            elevation=("axis elev. °", self.state.elevation_deg, -90, 90),
+            azimuth=("axis azimuth °", self.state.azimuth_deg, -180, 180),
+            elevation=("axis elevation °", self.state.elevation_deg, -90, 90),
             angle=("angle θ °", self.state.angle_deg, -360, 360))
         self.azimuth, self.elevation, self.angle = sliders.values()
         bind(self.state, {"azimuth_deg": self.azimuth, "elevation_deg": self.elevation,
                           "angle_deg": self.angle}, self.update)
-        self.info = w.HTML(value=s["text"], layout=w.Layout(width="330px"))
+        self.info = panel(s["text"], width="400px")
         self.widget = beside(self.fig.canvas, w.VBox([*sliders.values(), self.info]))
 
     def update(self):

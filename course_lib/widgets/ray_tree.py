@@ -17,7 +17,8 @@ import numpy as np
 
 from .. import draw, raytracing as rt
 from .._validate import as_choice
-from ._base import Explorer, read_controls
+from . import _style
+from ._base import Explorer, align, beside, checkbox, panel, read_controls, slider
 
 __all__ = ["KINDS", "RAY_COLORS", "RayTreeExplorer", "State", "clip_segment", "example",
            "picture", "scene"]
@@ -268,13 +269,13 @@ class RayTreeExplorer(Explorer):
         self.fig = draw.figure(figsize=(8.6, 4.2), dpi=90)
         self.ax_image = self.fig.add_axes((0.02, 0.12, 0.42, 0.8))
         self.ax_image.set(xticks=[], yticks=[])
-        self.ax_image.set_title("click a pixel", fontsize=9)
+        self.ax_image.set_title("click a pixel", fontsize=_style.TITLE)
         w_img, h_img = IMAGE
         self.picture = self.ax_image.imshow(s["image"], origin="lower", extent=(0, w_img, 0, h_img),
                                             interpolation="nearest")
         (self.marker,) = self.ax_image.plot([], [], "s", ms=9, mfc="none", mec="#ff2d95", mew=2)
-        self.ax3d = self.fig.add_axes((0.44, 0.1, 0.56, 0.9), projection="3d")
-        self.ax3d.set_title("the pixel's ray tree", fontsize=9)
+        self.ax3d = self.fig.add_axes((0.45, 0.15, 0.55, 0.78), projection="3d")
+        self.ax3d.set_title("the pixel's ray tree", fontsize=_style.TITLE)
         self.ax3d.view_init(elev=VIEW[0], azim=VIEW[1], vertical_axis="y")
         self.static = []
         self._draw_static(s)
@@ -287,34 +288,33 @@ class RayTreeExplorer(Explorer):
         (self.hit_points,) = self.ax3d.plot([], [], [], "o", color="#d0021b", ms=4,
                                             label="hit points")
         self.fig.legend(handles=[*self.lines.values(), self.hit_points], loc="lower center",
-                        bbox_to_anchor=(0.72, 0.0), fontsize=7, frameon=False, ncol=3)
+                        bbox_to_anchor=(0.72, 0.0), fontsize=_style.LEGEND, frameon=False, ncol=3,
+                        columnspacing=1.2, handlelength=1.6)
         self.blitter = draw.Blitter(self.fig, [*self.lines.values(), self.hit_points,
                                                self.marker])
 
         self.kind = w.ToggleButtons(options=KINDS, value=self.state.kind,
-                                    style={"button_width": "80px"})
-        style = {"description_width": "90px"}
-        self.row = w.IntSlider(value=self.state.row, min=0, max=h_img - 1, description="pixel row",
-                               continuous_update=True, style=style)
-        self.column = w.IntSlider(value=self.state.column, min=0, max=w_img - 1,
-                                  description="pixel column", continuous_update=True, style=style)
-        self.depth = w.IntSlider(value=self.state.max_depth, min=0, max=6,
-                                 description="max depth", continuous_update=True, style=style)
-        self.shadows = w.Checkbox(value=self.state.shadows, description="shadow rays",
-                                  indent=False)
+                                    style={"button_width": _style.button_width(*KINDS)})
+        self.row, self.column, self.depth = align([
+            slider("pixel row", self.state.row, 0, h_img - 1, 1, kind=w.IntSlider),
+            slider("pixel column", self.state.column, 0, w_img - 1, 1, kind=w.IntSlider),
+            slider("max depth", self.state.max_depth, 0, 6, 1, kind=w.IntSlider)])
+        self.shadows = checkbox("shadow rays", self.state.shadows)
         #: field of ``State`` -> its control (a click on the image sets row and column)
         self.controls = {"kind": self.kind, "max_depth": self.depth, "shadows": self.shadows,
                          "row": self.row, "column": self.column}
         for control in (self.kind, self.row, self.column, self.depth, self.shadows):
             control.observe(self._on_change, names="value")
         self._cid = self.fig.canvas.mpl_connect("button_press_event", self._on_click)
-        self.info = w.HTML(layout=w.Layout(width="330px"))
-        self.table = w.HTML()
+        self.info = panel(width="330px")
+        self.table = panel()
         self._kind_drawn = self.state.kind
-        self.widget = w.VBox([w.HBox([self.fig.canvas,
-                                      w.VBox([self.kind, self.row, self.column, self.depth,
-                                              self.shadows, self.info])],
-                                     layout=w.Layout(flex_flow="row wrap")), self.table])
+        # the figure is too wide for the controls beside it: they go under it, the table of
+        # rays beside them
+        self.widget = w.VBox([self.fig.canvas,
+                              beside(w.VBox([self.kind, self.row, self.column, self.depth,
+                                             self.shadows, self.info]),
+                                     self.table, align="flex-start")])
         self.current = None
         self._quiet = False
         self._image_key = self._key()
@@ -322,6 +322,7 @@ class RayTreeExplorer(Explorer):
 
     def _draw_static(self, s):
         """The scene's objects, light and eye (drawn once per scene kind)."""
+        from matplotlib.ticker import MaxNLocator
         from mpl_toolkits.mplot3d.art3d import Line3DCollection
 
         for artist in self.static:
@@ -353,7 +354,10 @@ class RayTreeExplorer(Explorer):
         ax.set(xlim=limits[0], ylim=limits[1], zlim=limits[2], xlabel="x", ylabel="y (up)",
                zlabel="z")
         ax.set_box_aspect([hi - lo for lo, hi in limits])
-        ax.tick_params(labelsize=6, pad=0)
+        ax.tick_params(labelsize=_style.TICK, pad=0)
+        for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+            axis.set_major_locator(MaxNLocator(4))
+            axis.label.set_fontsize(_style.LABEL)
         ax.grid(False)
         for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
             axis.set_pane_color((1.0, 1.0, 1.0, 0.0))

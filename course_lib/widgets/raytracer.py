@@ -23,7 +23,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .. import raytracing as rt
-from ._base import Explorer, bind, slider
+from . import _style
+from ._base import Explorer, align, beside, bind, checkbox, panel, slider
 
 __all__ = ["FULL", "PREVIEW", "RayTracerExplorer", "State", "TARGET", "build_scene",
            "make_camera", "scene"]
@@ -191,15 +192,15 @@ class RayTracerExplorer(Explorer):
         self.last_ms = 0.0
         self.image = w.Image(format="png", layout=w.Layout(width=f"{DISPLAY_WIDTH}px"))
         st = self.state
-        options = {"label_width": "110px", "width": "340px"}
+        options = {}
         self.depth = slider("recursion depth", st.max_depth, 0, 6, 1, kind=w.IntSlider, **options)
-        self.shadows = w.Checkbox(value=st.shadows, description="shadow rays", indent=False)
+        self.shadows = checkbox("shadow rays", st.shadows)
         self.mirror = slider("mirror k_r", st.mirror_reflectivity, 0, 1, 0.05, **options)
         self.glass = slider("glass k_t", st.glass_transparency, 0, 1, 0.05, **options)
         self.ior = slider("glass index η", st.glass_ior, 1.0, 2.5, 0.01, **options)
         self.floor = slider("floor k_r", st.floor_reflectivity, 0, 1, 0.05, **options)
-        self.azimuth = slider("camera az. °", st.azimuth, -180, 180, 2, **options)
-        self.elevation = slider("camera el. °", st.elevation, 2, 70, 1, **options)
+        self.azimuth = slider("camera azimuth °", st.azimuth, -180, 180, 2, **options)
+        self.elevation = slider("camera elevation °", st.elevation, 2, 70, 1, **options)
         self.distance = slider("camera distance", st.distance, 3.0, 12.0, 0.1, **options)
         # k_r + k_t <= 1 for the glass (its own k_r is 0), always true on [0, 1]
         bind(st, {"max_depth": self.depth, "shadows": self.shadows,
@@ -207,17 +208,18 @@ class RayTracerExplorer(Explorer):
                   "glass_ior": self.ior, "glass_transparency": self.glass,
                   "azimuth": self.azimuth, "elevation": self.elevation,
                   "distance": self.distance}, self.update)
-        self.full_button = w.Button(description="render full image", icon="image")
+        self.full_button = w.Button(description="render full image", icon="image",
+                                    layout=w.Layout(width=_style.button_width(
+                                        "render full image", "__")))        # and the icon
         self.full_button.on_click(lambda _: self.settle())
         self.status = w.HTML()
-        self.info = w.HTML(layout=w.Layout(width=f"{DISPLAY_WIDTH}px"))
+        self.info = panel(width=f"{DISPLAY_WIDTH}px")
+        align([self.depth, self.mirror, self.glass, self.ior, self.floor, self.azimuth,
+               self.elevation, self.distance])
         controls = w.VBox([self.depth, self.shadows, self.mirror, self.glass, self.ior,
                            self.floor, self.azimuth, self.elevation, self.distance,
                            self.full_button, self.status])
-        self.widget = w.VBox([w.HBox([self.image, controls],
-                                     layout=w.Layout(flex_flow="row wrap",
-                                                     align_items="center")),
-                              self.info])
+        self.widget = w.VBox([beside(self.image, controls), self.info])
         self.current = None
         self._render(preview=False)
 

@@ -12,7 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, mesh
-from ._base import PlotterExplorer, bind, pyvista_faces
+from . import _style
+from ._base import PlotterExplorer, beside, bind, panel, pyvista_faces, slider
 
 __all__ = ["START_FACES", "TARGET_FACES", "SimplificationExplorer", "State", "bumpy_sphere",
            "scene"]
@@ -129,22 +130,22 @@ class SimplificationExplorer(PlotterExplorer):
         self.poly["error"] = s["errors"]
         self.plotter.add_mesh(self.poly, scalars="error", cmap="viridis",
                               clim=(0, 0.5 * s["max_error"]), show_edges=True, edge_color="#303030",
-                              line_width=0.5, scalar_bar_args={"title": "error",
-                                                               "vertical": True,
-                                                               "position_x": 0.84,
-                                                               "position_y": 0.1})
+                              line_width=0.5,
+                              scalar_bar_args=_style.scalar_bar("error"))
         self.candidates = pv.PolyData(s["segments"].reshape(-1, 3),
                                       lines=_lines(len(s["segments"])))
         self.plotter.add_mesh(self.candidates, color="#d0021b", line_width=5)
-        self.plotter.camera_position = [(3.6, -2.4, 2.0), (0, 0, 0), (0, 0, 1)]
+        # the focal point a little to the right of the mesh: the mesh sits left of the colour bar
+        right = 0.3 * np.array([0.55, 0.83, 0.0])
+        self.plotter.camera_position = [(3.6, -2.4, 2.0) + right, right, (0, 0, 1)]
         self.image = w.Image(format="jpeg", layout=w.Layout(width="420px"))
-        self.faces = w.IntSlider(value=self.state.faces, min=TARGET_FACES, max=START_FACES,
-                                 step=2, description="faces", continuous_update=True)
+        self.faces = slider("faces", self.state.faces, TARGET_FACES, START_FACES, 2,
+                            kind=w.IntSlider)
         bind(self.state, {"faces": self.faces}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="380px"))
-        self.table = w.HTML()
-        self.widget = w.HBox([self.image, w.VBox([self.faces, self.info, self.table])],
-                             layout=w.Layout(flex_flow="row wrap"))
+        self.info = panel(width="380px")
+        self.table = panel()
+        self.widget = beside(self.image, w.VBox([self.faces, self.info, self.table]),
+                             align="flex-start")
         self._draw(s)
 
     def update(self):

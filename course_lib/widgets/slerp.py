@@ -11,7 +11,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, quaternions, shapes
-from ._base import Explorer
+from . import _style
+from ._base import Explorer, beside, labelled, panel, slider
 
 __all__ = ["PRESETS", "SlerpExplorer", "State", "angular_speed", "euler_quaternions", "paths",
            "scene"]
@@ -190,8 +191,9 @@ class SlerpExplorer(Explorer):
                                          lw=2, ls="--", label="Euler angles")
         self.t_line = speed.axvline(self.state.t, color="0.3", lw=1)
         speed.set(xlim=(0, 1), xlabel="t", ylabel="angular speed (° per unit t)")
-        speed.set_title("how fast the F turns", fontsize=10)
-        speed.legend(loc="upper right", fontsize=8)
+        speed.set_title("how fast the F turns")
+        _style.legend(speed, loc="upper right")
+        _style.style_figure(self.fig)
         speed.grid(True, color="0.9")
         self.speed_ax = speed
         self._rescale_speed(s)
@@ -199,16 +201,15 @@ class SlerpExplorer(Explorer):
                                                self.euler_path, self.slerp_tip, self.euler_tip,
                                                self.slerp_speed, self.euler_speed, self.t_line])
 
-        self.t = w.FloatSlider(value=self.state.t, min=0.0, max=1.0, step=0.01,
-                               description="t", continuous_update=True,
-                               layout=w.Layout(width="420px"))
-        self.preset = w.Dropdown(options=list(PRESETS), value=self.state.preset,
-                                 description="orientations", style={"description_width": "90px"},
-                                 layout=w.Layout(width="360px"))
+        self.t = slider("t", self.state.t, 0.0, 1.0, 0.01, label_width="30px", body=300)
+        self.preset = labelled(w.Dropdown, "orientations", options=list(PRESETS),
+                               value=self.state.preset)
         self.t.observe(self._on_change, names="value")
         self.preset.observe(self._on_change, names="value")
-        self.info = w.HTML(value=s["text"], layout=w.Layout(width="800px"))
-        self.widget = w.VBox([w.HBox([self.preset, self.t]), self.fig.canvas, self.info])
+        self.info = panel(s["text"], width="800px")
+        self.widget = w.VBox([w.HBox([self.preset, self.t],
+                                     layout=w.Layout(flex_flow="row wrap", grid_gap="0 12px")),
+                              self.fig.canvas, self.info])
 
     def _rescale_speed(self, s):
         top = max(s["slerp_speed"].max(), s["euler_speed"].max())

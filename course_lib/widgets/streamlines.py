@@ -17,7 +17,8 @@ import numpy as np
 
 from .. import draw, scivis
 from .._validate import as_choice
-from ._base import Explorer, bind
+from . import _style
+from ._base import Explorer, align, beside, bind, checkbox, labelled, panel, slider
 from ._drag import DraggablePoints
 
 __all__ = ["FIELDS", "METHODS", "State", "StreamlineExplorer", "convergence", "exact_streamline",
@@ -250,19 +251,22 @@ class StreamlineExplorer(Explorer):
     def __init__(self, state=None):
         import ipywidgets as w
         from matplotlib.collections import PolyCollection
+        from matplotlib.ticker import LogLocator
 
         self.state = state or State()
         self.state.seeds = np.asarray(self.state.seeds, dtype=float).reshape(-1, 2)
         k = len(self.state.seeds)
         if not 1 <= k <= MAX_SEEDS:
             raise ValueError(f"seeds must hold 1 to {MAX_SEEDS} points, got {k}")
-        self.fig = draw.figure(figsize=(7.6, 4.6), dpi=72)
-        grid = self.fig.add_gridspec(2, 2, width_ratios=(2.5, 1.3), height_ratios=(1.6, 1),
-                                     left=0.07, right=0.98, bottom=0.1, top=0.93, wspace=0.3,
-                                     hspace=0.1)
+        self.fig = draw.figure(figsize=(6.6, 4.0))
+        grid = self.fig.add_gridspec(2, 2, width_ratios=(2.3, 1.5), height_ratios=(1.6, 1),
+                                     left=0.095, right=0.985, bottom=0.11, top=0.93, wspace=0.38,
+                                     hspace=0.32)
         ax = self.fig.add_subplot(grid[:, 0])
         draw.setup_axes_2d(ax, (-LIMIT, LIMIT), title="streamlines: numerical vs exact",
                            grid=False)
+        ticks = np.arange(-LIMIT, LIMIT + 0.5, 1.0)
+        ax.set(xticks=ticks, yticks=ticks)
         self.ax = ax
         self.glyphs = PolyCollection([], facecolors="0.78", edgecolors="none", zorder=0)
         ax.add_collection(self.glyphs)
@@ -273,47 +277,49 @@ class StreamlineExplorer(Explorer):
         self.ends = [ax.plot([], [], "x", ms=8, mew=2, zorder=4)[0] for j in range(k)]
         (self.seeds,) = ax.plot([], [], "o", color="white", mec="0.1", mew=1.5, ms=10,
                                 zorder=5, label="seeds (drag)")
-        ax.legend(loc="lower left", fontsize=7, framealpha=0.9)
+        _style.legend(ax, loc="lower left", framealpha=0.9, handlelength=1.5, borderpad=0.3,
+                      labelspacing=0.2, borderaxespad=0.3)
         err_ax = self.fig.add_subplot(grid[0, 1])
         err_ax.set(xscale="log", yscale="log", xlim=(0.03, 1.3), ylim=(1e-9, 1e2))
-        err_ax.set_xlabel("step h", fontsize=8, labelpad=1)
-        err_ax.set_ylabel("end-point error", fontsize=8)
-        err_ax.set_title("error vs step (seed 1)", fontsize=9)
-        err_ax.tick_params(labelsize=7)
+        err_ax.set_xlabel("step h", labelpad=1)
+        err_ax.set_ylabel("end-point error")
+        err_ax.set_title("error vs step (seed 1)")
+        err_ax.yaxis.set_major_locator(LogLocator(numticks=4))
         err_ax.grid(True, which="major", lw=0.4, color="0.85")
         self.curves = {m: err_ax.plot([], [], "o-", ms=3, lw=1.2, color=METHOD_COLORS[m],
                                       label=METHOD_NAMES[m])[0] for m in METHODS}
         (self.current,) = err_ax.plot([], [], "o", ms=9, mfc="none", mec="k", mew=1.5)
-        err_ax.legend(loc="lower right", fontsize=6.5)
+        _style.legend(err_ax, loc="lower right", handlelength=1.2, borderpad=0.2,
+                      labelspacing=0.1, borderaxespad=0.2, markerscale=0.8)
         self.err_ax = err_ax
         note = self.fig.add_subplot(grid[1, 1])
         note.set_axis_off()
-        note.text(0, 0.7, "slope of the line = order:\nEuler 1, RK2 2, RK4 4.\nHalving h "
-                  "divides the\nerror by 2, 4 or 16.\n(The ringed dot is the\n"
-                  "current h and T.)", fontsize=8, va="top", color="0.2")
+        note.text(-0.12, 1.0, "slope of the line = order:\nEuler 1, RK2 2, RK4 4.\nHalving h "
+                  "divides the\nerror by 2, 4 or 16.\n(The ringed dot: the\n"
+                  "current h and T.)", fontsize=_style.ANNOTATION, va="top", color="0.2")
+        _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [*self.exact, *self.lines, *self.ends, self.seeds,
                                                *self.curves.values(), self.current])
         self.drag = DraggablePoints(ax, self.state.seeds, self._on_drag,
                                     on_release=self._on_release)
-        self.kind = w.Dropdown(options=FIELDS, value=self.state.kind, description="field")
-        self.method = w.ToggleButtons(options=[(METHOD_NAMES[m], m) for m in METHODS],
-                                      value=self.state.method, style={"button_width": "100px"})
-        self.step = w.FloatLogSlider(value=self.state.step, base=10, min=np.log10(0.04), max=0.0,
-                                     step=0.02, description="step h", readout_format=".3f",
-                                     layout=w.Layout(width="330px"))
-        self.duration = w.FloatSlider(value=self.state.duration, min=0.5, max=2 * np.pi,
-                                      step=0.05, description="time T", readout_format=".2f",
-                                      continuous_update=False,
-                                      layout=w.Layout(width="330px"))
-        self.exact_box = w.Checkbox(value=self.state.show_exact, description="exact path")
+        self.kind = labelled(w.Dropdown, "field", options=FIELDS, value=self.state.kind)
+        names = [METHOD_NAMES[m] for m in METHODS]
+        self.method = w.ToggleButtons(options=list(zip(names, METHODS)), value=self.state.method,
+                                      style={"button_width": "auto"})        # fits each name
+        self.step = labelled(w.FloatLogSlider, "step h", value=self.state.step, base=10,
+                             min=np.log10(0.04), max=0.0, step=0.02, readout_format=".3f")
+        self.duration = slider("time T", self.state.duration, 0.5, 2 * np.pi, 0.05,
+                               readout_format=".2f", continuous_update=False)
+        align([self.kind, self.step, self.duration])
+        self.exact_box = checkbox("exact path", self.state.show_exact)
         self.kind.observe(self._on_kind, names="value")
         self.duration.observe(self._on_duration, names="value")
         bind(self.state, {"method": self.method, "step": self.step,
                           "show_exact": self.exact_box}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="340px"))
+        self.info = panel(width="340px")
         controls = w.VBox([self.kind, self.method, self.step, self.duration, self.exact_box,
                            self.info])
-        self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))
+        self.widget = beside(self.fig.canvas, controls, align="flex-start")
         self._static()
         self._convergence()
         self._draw(scene(self.state))

@@ -13,7 +13,8 @@ import numpy as np
 
 from .. import curves, draw, surfaces
 from .._validate import as_choice
-from ._base import PlotterExplorer, bind
+from . import _style
+from ._base import PlotterExplorer, align, beside, bind, labelled, panel, slider
 
 __all__ = ["KINDS", "State", "SurfaceExplorer", "control_grid", "scene"]
 
@@ -173,25 +174,23 @@ class SurfaceExplorer(PlotterExplorer):
         self.plotter.add_mesh(self.iso, color="#595959", line_width=1)
         self._set_camera()
         self.image = w.Image(format="jpeg", layout=w.Layout(width="440px"))
-        self.kind = w.ToggleButtons(options=KINDS, value=self.state.kind)
-        self.i = w.IntSlider(value=self.state.i, min=0, max=SIZE - 1, description="point i")
-        self.j = w.IntSlider(value=self.state.j, min=0, max=SIZE - 1, description="point j")
-        self.lift = w.FloatSlider(value=self.state.lift, min=-1.5, max=1.5, step=0.05,
-                                  description="lift z")
-        self.weight = w.FloatLogSlider(value=self.state.weight, base=10, min=-1, max=1,
-                                       step=0.02, description="weight")
-        self.azimuth = w.FloatSlider(value=self.state.azimuth, min=-180, max=180, step=2,
-                                     description="view az. °")
-        self.elevation = w.FloatSlider(value=self.state.elevation, min=-10, max=80, step=2,
-                                       description="view el. °")
+        self.kind = w.ToggleButtons(options=KINDS, value=self.state.kind,
+                                    style={"button_width": _style.button_width(*KINDS)})
+        self.i = slider("point i", self.state.i, 0, SIZE - 1, 1, kind=w.IntSlider)
+        self.j = slider("point j", self.state.j, 0, SIZE - 1, 1, kind=w.IntSlider)
+        self.lift = slider("lift z", self.state.lift, -1.5, 1.5, 0.05)
+        self.weight = labelled(w.FloatLogSlider, "weight", value=self.state.weight, base=10,
+                               min=-1, max=1, step=0.02)
+        self.azimuth = slider("view azimuth °", self.state.azimuth, -180, 180, 2)
+        self.elevation = slider("view elevation °", self.state.elevation, -10, 80, 2)
+        align([self.i, self.j, self.lift, self.weight, self.azimuth, self.elevation])
         bind(self.state, {"kind": self.kind, "i": self.i, "j": self.j, "lift": self.lift,
                           "weight": self.weight, "azimuth": self.azimuth,
                           "elevation": self.elevation}, self._on_change)
-        self.info = w.HTML(layout=w.Layout(width="360px"))
-        self.widget = w.HBox([self.image, w.VBox([self.kind, self.i, self.j, self.lift,
-                                                  self.weight, self.azimuth, self.elevation,
-                                                  self.info])],
-                             layout=w.Layout(flex_flow="row wrap"))
+        self.info = panel(width="360px")
+        self.widget = beside(self.image, w.VBox([self.kind, self.i, self.j, self.lift,
+                                                 self.weight, self.azimuth, self.elevation,
+                                                 self.info]), align="flex-start")
         self.weight.disabled = self.state.kind != "NURBS"
         self._draw(s)
 

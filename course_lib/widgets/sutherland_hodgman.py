@@ -5,6 +5,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import clipping, draw, format as fmt
+from . import _style
 from ._clip2d import BOX_MAX, BOX_MIN, LIMITS, StepExplorer, window_figure
 from ._drag import pseudocode_html
 
@@ -132,7 +133,8 @@ class SutherlandHodgmanExplorer(StepExplorer):
         self.after = ax.fill([], [], facecolor=(0.12, 0.47, 0.71, 0.35), edgecolor="C0", lw=2,
                              zorder=5)[0]
         (self.after_pts,) = ax.plot([], [], "o", color="C0", ms=5, zorder=6)
-        self.numbers = [ax.text(0, 0, "", fontsize=8, color="C0", zorder=7) for _ in range(12)]
+        self.numbers = [ax.text(0, 0, "", fontsize=_style.ANNOTATION, color="C0", zorder=7)
+                        for _ in range(12)]
         self.blitter = draw.Blitter(self.fig, [self.outside, self.side_line, self.original,
                                                self.before, self.after, self.after_pts,
                                                *self.numbers])

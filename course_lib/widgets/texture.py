@@ -30,7 +30,8 @@ import numpy as np
 
 from .. import draw, texturing
 from .._validate import as_choice
-from ._base import PlotterExplorer, labelled, read_controls, slider
+from . import _style
+from ._base import PlotterExplorer, align, beside, labelled, panel, read_controls, slider
 
 __all__ = ["MAPPINGS", "SIZES", "State", "TEXTURES", "TextureExplorer", "compendium_map",
            "filtering", "mesh_grid", "scene", "texture_image", "texture_uv"]
@@ -446,12 +447,12 @@ class TextureExplorer(PlotterExplorer):
                 image = s["filtering"][key][method]
                 self.panel[key, method] = ax.imshow(np.clip(image, 0, 1), origin="lower",
                                                     interpolation="nearest", aspect="auto")
-                label = (f"{method}" + (" (= bilinear: level 0)"
+                label = (f"{method}" + (" (= bilinear)"
                                         if key == "magnified" and method == "trilinear" else ""))
-                ax.set_title(f"{key}: {label}", fontsize=8)
+                ax.set_title(f"{key}: {label}", fontsize=_style.ANNOTATION)
         self.blitter = draw.Blitter(self.fig, list(self.panel.values()))
 
-        st, options = self.state, {"label_width": "70px", "width": "300px"}
+        st, options = self.state, {}
         self._busy = False
         self.texture = labelled(w.Dropdown, "texture", options=TEXTURES, value=st.texture,
                                 **options)
@@ -461,11 +462,13 @@ class TextureExplorer(PlotterExplorer):
         self.size = labelled(w.SelectionSlider, "texels", options=SIZES, value=st.size,
                              **options)
         self.sampling = w.ToggleButtons(options=SAMPLINGS, value=st.sampling,
-                                        style={"button_width": "90px"})
+                                        style={"button_width": _style.button_width(*SAMPLINGS)})
         self.mapping = labelled(w.Dropdown, "mapping", options=MAPPINGS, value=st.mapping,
                                 **options)
-        self.azimuth = slider("view az. °", st.azimuth, -180, 180, 2, **options)
-        self.elevation = slider("view el. °", st.elevation, -80, 80, 2, **options)
+        self.azimuth = slider("view azimuth °", st.azimuth, -180, 180, 2, **options)
+        self.elevation = slider("view elevation °", st.elevation, -80, 80, 2, **options)
+        align([self.texture, self.frequency, self.strength, self.size, self.mapping,
+               self.azimuth, self.elevation])
         #: field of ``State`` -> its control (the texture menu also resets two sliders)
         self.controls = {"texture": self.texture, "frequency": self.frequency,
                          "strength": self.strength, "size": self.size,
@@ -474,12 +477,10 @@ class TextureExplorer(PlotterExplorer):
         for name, control in self.controls.items():
             if name != "texture":
                 control.observe(self._on_change, names="value")
-        self.info = w.HTML(layout=w.Layout(width="320px"))
+        self.info = panel(width="320px")
         controls = w.VBox([self.texture, self.frequency, self.strength, self.size,
-                           self.sampling, self.mapping, self.azimuth, self.elevation])
-        self.widget = w.VBox([w.HBox([self.image, controls, self.info],
-                                     layout=w.Layout(flex_flow="row wrap")),
-                              self.fig.canvas])
+                           self.sampling, self.mapping, self.azimuth, self.elevation, self.info])
+        self.widget = w.VBox([beside(self.image, controls, align="flex-start"), self.fig.canvas])
         self._texture_key = None
         self._picture_key = None
         self._draw(s)

@@ -30,7 +30,8 @@ import numpy as np
 
 from .. import colormaps, draw, scivis
 from .._validate import as_choice
-from ._base import Explorer, bind
+from . import _style
+from ._base import Explorer, align, beside, bind, labelled, panel, slider
 from ._drag import DraggablePoints
 
 __all__ = ["FIELDS", "PRESETS", "RaySamples", "State", "TransferFunctionExplorer", "example_data",
@@ -47,7 +48,7 @@ PREVIEW_STEP = 1.0                  # voxels between samples while dragging (ful
 EXTENT = (-0.95, 0.95, -0.95, 0.95)     # the image window in view coordinates: the whole head
 MIN_GAP = 0.005                     # control points stay this far apart (and in order)
 BINS = 64
-FIGSIZE = (6.2, 5.3)
+FIGSIZE = (5.6, 4.9)
 LUT_SIZE = 1024                     # entries of the preview's classification table
 CURVE_SAMPLES = 256
 
@@ -350,27 +351,28 @@ class TransferFunctionExplorer(Explorer):
         self.state = state or State()
         s = scene(self.state)
         self._syncing = False
-        self.fig = draw.figure(figsize=FIGSIZE, dpi=72)
-        grid = self.fig.add_gridspec(3, 2, height_ratios=(3.0, 2.0, 0.22), left=0.07,
-                                     right=0.98, bottom=0.04, top=0.95, hspace=0.28,
+        self.fig = draw.figure(figsize=FIGSIZE)
+        grid = self.fig.add_gridspec(3, 2, height_ratios=(3.0, 2.0, 0.22), left=0.1,
+                                     right=0.98, bottom=0.09, top=0.95, hspace=0.3,
                                      wspace=0.12)
         field_ax = self.fig.add_subplot(grid[0, 0])
         f = example_data(self.state.field)
         (x0, x1), (y0, y1) = ((a[0], a[-1]) for a in f.axes)
         self.field_image = field_ax.imshow(s["field_rgb"], origin="lower",
                                            extent=(x0, x1, y0, y1), interpolation="bilinear")
-        field_ax.set_title("2D field as a slab over a checkerboard", fontsize=9)
-        field_ax.set(xlabel="x", ylabel="y")
-        field_ax.tick_params(labelsize=7)
+        field_ax.set_title("2D field: a slab over a checkerboard")
+        field_ax.set(xlabel="x", ylabel="y", xticks=[x0, (x0 + x1) / 2, x1],
+                     yticks=[y0, (y0 + y1) / 2, y1])
         volume_ax = self.fig.add_subplot(grid[0, 1])
         self.volume_image = volume_ax.imshow(s["volume"].rgb, origin="lower",
                                              extent=(0, 1, 0, 1), interpolation="bilinear")
-        volume_ax.set_title("volume rendering (ray casting)", fontsize=9)
+        volume_ax.set_title("volume (ray casting)")
         volume_ax.set_axis_off()
         self.volume_ax = volume_ax
         ax = self.fig.add_subplot(grid[1, :])
-        ax.set(xlim=(-0.015, 1.015), ylim=(-0.04, 1.06), ylabel="opacity α (per voxel)")
-        ax.tick_params(labelsize=7, labelbottom=False)
+        ax.set(xlim=(-0.015, 1.015), ylim=(-0.04, 1.06), ylabel="opacity α",
+               yticks=[0, 0.5, 1])
+        ax.tick_params(labelbottom=False)
         ax.grid(True, color="0.92")
         edges, field_hist, volume_hist = s["histogram"]
         self.volume_hist = ax.stairs(volume_hist, edges, fill=True, color="0.82",
@@ -383,45 +385,42 @@ class TransferFunctionExplorer(Explorer):
                                   c=s["colors"], edgecolors="0.1", linewidths=1.2, zorder=5)
         (self.selected,) = ax.plot([], [], "o", ms=14, mfc="none", mec="#d62728", mew=2,
                                    zorder=6)
-        ax.legend(loc="upper left", fontsize=7, framealpha=0.85)
+        _style.legend(ax, loc="upper left", framealpha=0.85, handlelength=1.2, borderpad=0.3,
+                      labelspacing=0.2)
         self.ax = ax
         strip_ax = self.fig.add_subplot(grid[2, :], sharex=ax)
         self.strip = strip_ax.imshow(s["strip"], aspect="auto", extent=(0, 1, 0, 1),
                                      interpolation="nearest")
-        strip_ax.set(yticks=[], xlabel="normalised data value s (colour c(s) below)")
-        strip_ax.tick_params(labelsize=7)
+        strip_ax.set(yticks=[], xlabel="normalised data value s (the strip: colour c(s))")
+        _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.field_image, self.volume_image, self.fill,
                                                self.curve, self.handles, self.selected,
                                                self.strip])
         self.drag = DraggablePoints(ax, s["handles"], self._on_drag, radius=10,
                                     on_press=self._on_pick, on_release=self._on_release)
 
-        layout = w.Layout(width="310px")
-        style = {"description_width": "70px"}
-        self.preset = w.Dropdown(options=("custom",) + PRESETS, value="skin",
-                                 description="preset", layout=layout, style=style)
-        self.field = w.Dropdown(options=FIELDS, value=self.state.field, description="2D field",
-                                layout=layout, style=style)
-        self.point = w.IntSlider(value=self.state.selected, min=0,
-                                 max=len(self.state.points) - 1, description="point",
-                                 layout=layout, style=style)
-        self.value = w.FloatSlider(min=0, max=1, step=0.005, description="value s",
-                                   continuous_update=False, readout_format=".3f",
-                                   layout=layout, style=style)
-        self.opacity = w.FloatSlider(min=0, max=1, step=0.005, description="opacity α",
-                                     continuous_update=False, readout_format=".3f",
-                                     layout=layout, style=style)
-        self.color = w.ColorPicker(description="colour", layout=layout, style=style)
+        self.preset = labelled(w.Dropdown, "preset", options=("custom",) + PRESETS,
+                               value="skin")
+        self.field = labelled(w.Dropdown, "2D field", options=FIELDS, value=self.state.field)
+        self.point = slider("point", self.state.selected, 0, len(self.state.points) - 1, 1,
+                            kind=w.IntSlider)
+        self.value = slider("value s", 0, 0, 1, 0.005, continuous_update=False,
+                            readout_format=".3f")
+        self.opacity = slider("opacity α", 0, 0, 1, 0.005, continuous_update=False,
+                              readout_format=".3f")
+        self.color = labelled(w.ColorPicker, "colour")
+        self.thickness = slider("2D slab d", self.state.thickness, 1, 30, 1,
+                                continuous_update=False)
+        self.azimuth = slider("view azimuth °", self.state.azimuth, -180, 180, 5,
+                              continuous_update=False)
+        column = align([self.preset, self.field, self.point, self.value, self.opacity,
+                        self.color, self.thickness, self.azimuth])
+        width = column[0].layout.width
         self.recolor = w.Dropdown(options=("colour all points from a map…",) + RECOLOR_MAPS,
-                                  layout=layout)
-        self.thickness = w.FloatSlider(value=self.state.thickness, min=1, max=30, step=1,
-                                       description="2D slab d", continuous_update=False,
-                                       layout=layout, style=style)
-        self.azimuth = w.FloatSlider(value=self.state.azimuth, min=-180, max=180, step=5,
-                                     description="view az. °", continuous_update=False,
-                                     layout=layout, style=style)
-        add = w.Button(description="add point", layout=w.Layout(width="150px"))
-        remove = w.Button(description="remove point", layout=w.Layout(width="150px"))
+                                  layout=w.Layout(width=width))
+        button = w.Layout(width=_style.button_width("add point", "remove point"))
+        add = w.Button(description="add point", layout=button)
+        remove = w.Button(description="remove point", layout=button)
         add.on_click(lambda _: self.add_point())
         remove.on_click(lambda _: self.remove_point())
         self.preset.observe(self._on_preset, names="value")
@@ -431,12 +430,12 @@ class TransferFunctionExplorer(Explorer):
             control.observe(self._on_edit, names="value")
         self.recolor.observe(self._on_recolor, names="value")
         bind(self.state, {"azimuth": self.azimuth, "thickness": self.thickness}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="310px"))
+        self.info = panel(width=width)
         controls = w.VBox([self.preset, self.field, self.point, self.value, self.opacity,
                            self.color, w.HBox([add, remove]), self.recolor, self.thickness,
                            self.azimuth,
                            self.info])
-        self.widget = w.HBox([self.fig.canvas, controls], layout=w.Layout(flex_flow="row wrap"))
+        self.widget = beside(self.fig.canvas, controls, align="flex-start")
         self._sync_controls()
         self._draw(s)
 

@@ -10,7 +10,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import draw, visibility
-from ._base import Explorer, bind
+from . import _style
+from ._base import Explorer, bind, labelled, panel, slider
 from ._drag import pseudocode_html
 
 __all__ = ["ORDERS", "PSEUDOCODE", "State", "TRIANGLES", "ZBufferExplorer", "scene"]
@@ -157,27 +158,27 @@ class ZBufferExplorer(Explorer):
             edges = [[(x, 0), (x, HEIGHT)] for x in range(WIDTH + 1)] + \
                     [[(0, y), (WIDTH, y)] for y in range(HEIGHT + 1)]
             ax.add_collection(LineCollection(edges, colors="0.8", linewidths=0.5, zorder=1.5))
-            ax.tick_params(labelsize=7)
-            ax.set_title(title, fontsize=10)
+            ax.set_title(title)
             for k, tri in enumerate(TRIANGLES):
                 closed = np.vstack([tri[:, :2], tri[:1, :2]])
                 ax.plot(*closed.T, color=COLORS[k] * 0.7, lw=1.2)
-                ax.text(*tri[:, :2].mean(axis=0), str(k), color=COLORS[k] * 0.5, fontsize=10,
+                ax.text(*tri[:, :2].mean(axis=0), str(k), color=COLORS[k] * 0.5,
+                        fontsize=_style.LABEL,
                         ha="center", va="center", weight="bold")
             (covered,) = ax.plot([], [], "s", mfc="none", mec="0.15", ms=9, mew=1.2)
             (written,) = ax.plot([], [], "x", color="0.1", ms=5)
             self.marks.append((covered, written))
+        _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.ids_image, self.depth_image,
                                                *[m for pair in self.marks for m in pair]])
-        self.order = w.Dropdown(options=list(ORDERS), value=self.state.order,
-                                description="order", layout=w.Layout(width="330px"))
-        self.step = w.IntSlider(value=self.state.step, min=0, max=len(TRIANGLES),
-                                description="triangles", continuous_update=True)
+        self.order = labelled(w.Dropdown, "order", options=list(ORDERS), value=self.state.order)
+        self.step = slider("triangles", self.state.step, 0, len(TRIANGLES), 1, kind=w.IntSlider)
         bind(self.state, {"order": self.order, "step": self.step}, self.update)
-        self.info = w.HTML(layout=w.Layout(width="800px"))
-        legend = w.HTML("<small>□ pixels the current triangle covers &nbsp; × pixels it "
-                        "overwrites</small>")
-        self.widget = w.VBox([w.HBox([self.order, self.step]), self.fig.canvas, legend,
+        self.info = panel(width="800px")
+        legend = panel("□ pixels the current triangle covers &nbsp; × pixels it overwrites")
+        self.widget = w.VBox([w.HBox([self.order, self.step],
+                                     layout=w.Layout(flex_flow="row wrap", grid_gap="0 12px")),
+                              self.fig.canvas, legend,
                               self.info])
         self._draw(s)
 

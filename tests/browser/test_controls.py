@@ -3,7 +3,8 @@ explorer driven there.
 
 First, as a student opens a lesson: Run All, then no error output, no browser console error, no
 message in JupyterLab's log console, and every widget of the stored notebook rendered with a
-figure (nbval only proves the kernel side).
+figure (nbval only proves the kernel side); every explorer's view with its control labels whole
+and nothing past its output area's right edge (:mod:`.look`), with a screenshot of each.
 
 JupyterLab 4.6 sends widget messages to kernel subshells by default, so a callback runs on a
 thread other than the one that made the explorer's figure (see
@@ -21,6 +22,7 @@ from pathlib import Path
 import pytest
 
 from .controls import drive
+from .look import look_problems
 from .lab import (ROOT, WIDGET_VIEW, NotebookPage, PageKernel, cell_execution_counts,
                   expected_widget_cells)
 
@@ -41,6 +43,8 @@ EXPECTED = {
         "none", "the preset chosen just before ('ramp') is already grey"),
     ("RayTracerExplorer", "button|render full image|1", None): (
         "none", "the full image is already shown once the sliders rest"),
+    ("SurfaceExplorer", "toggles|Bézier/B-spline/NURBS|1", "NURBS"): (
+        "text", "with every weight 1 (the default) a NURBS patch is its B-spline patch"),
     ("MockExamWidget", "textarea||1", None): (
         "none", "an answer is read when it is submitted"),
     ("MockExamWidget", "number|seed|1", None): (
@@ -94,12 +98,19 @@ def test_lesson_runs_and_every_control_of_every_explorer_changes_its_picture(lab
         explorers = kernel.json(PROBE.replace("COUNTS", repr(counts)))
         views = notebook.page.locator(WIDGET_VIEW)
         assert views.count() == len(explorers)
+        # first the look, as Run All leaves it: every label whole, nothing clipped
+        looks = []
+        for k, explorer in enumerate(explorers):
+            view = views.nth(k)
+            view.scroll_into_view_if_needed()
+            notebook.screenshot(f"{Path(path).stem}-{k}-{explorer['class']}", view)
+            looks += look_problems(view, explorer["class"])
+        assert looks == [], "\n".join(looks)
         done, problems = [], []
         for k, explorer in enumerate(explorers):
             view = views.nth(k)
             view.scroll_into_view_if_needed()
             name = explorer["class"]
-            notebook.screenshot(f"{Path(path).stem}-{k}-{name}", view)
             expected = {(key, option): how for (cls, key, option), (how, _) in EXPECTED.items()
                         if cls == name}
             lines, wrong = drive(view, explorer["gestures"], MIN_CHANGED, expected)
