@@ -14,7 +14,7 @@ import numpy as np
 from .. import draw, mesh
 from .._validate import as_choice
 from . import _style
-from ._base import Explorer, align, beside, bind, figure_3d, labelled, panel, slider
+from ._base import Explorer, align, beside, bind, figure_3d, labelled, panel
 
 __all__ = ["MESHES", "HalfEdgeExplorer", "State", "scene"]
 

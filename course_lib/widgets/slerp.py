@@ -12,7 +12,7 @@ import numpy as np
 
 from .. import draw, quaternions, shapes
 from . import _style
-from ._base import Explorer, beside, labelled, panel, slider
+from ._base import Explorer, labelled, panel, slider
 
 __all__ = ["PRESETS", "SlerpExplorer", "State", "angular_speed", "euler_quaternions", "paths",
            "scene"]
