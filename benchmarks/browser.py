@@ -293,8 +293,12 @@ def measure_lesson(browser, server, path, samples, seconds, only=None):
         live = page.evaluate(
             """(sel) => { const views = [...document.querySelectorAll(sel)];
                  const shown = new Set(window.__bench.frames.map(f => f.view));
+                 // a picture set before its element was attached is no mutation: count an
+                 // image widget as live once it holds a decoded picture
+                 const pictured = (v) => [...v.querySelectorAll('img.widget-image')]
+                     .some(i => i.complete && i.naturalWidth > 0);
                  return views.map((v, k) => !v.querySelector('canvas, img.widget-image')
-                                            || shown.has(k)); }""", WIDGET_VIEW)
+                                            || shown.has(k) || pictured(v)); }""", WIDGET_VIEW)
         if len(live) >= expected and all(live):
             break
         time.sleep(0.1)
