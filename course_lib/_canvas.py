@@ -55,9 +55,6 @@ def fast_frames(canvas):
     if hasattr(canvas, "on_msg") and hasattr(canvas, "draw_idle"):
         _push_frames(canvas)
         _placed_frames(canvas)
-        decoder = _frame_decoder(canvas)
-        if decoder is not None:
-            canvas._course_frame_decoder = decoder      # lives as long as the canvas
 
 
 def _kernel_loop():
@@ -86,9 +83,14 @@ def _push_frames(canvas):
     def seen(widget, content, buffers):
         if isinstance(content, dict) and content.get("type") == "initialized":
             canvas._course_shown = True
-            # a new page: whole frames until its frame decoder says it is ready
+            # a new page: whole frames until its frame decoder says it is ready. The decoder
+            # is made now, when the page holds the canvas's model (a static figure, closed
+            # before the page saw it, gets none)
             canvas._course_regions = False
             canvas._course_last = None
+            if getattr(canvas, "comm", None) is not None and \
+                    getattr(canvas, "_course_frame_decoder", None) is None:
+                canvas._course_frame_decoder = _frame_decoder(canvas)
 
     def draw_now():
         canvas._course_draw_queued = False
@@ -205,12 +207,15 @@ function patch(proto) {
 }
 export default {
   async initialize({ model }) {
-    const ref = model.get('canvas') || '';
-    const canvas = await model.widget_manager.get_model(ref.replace(/^IPY_MODEL_/, ''));
-    if (canvas && typeof canvas.handle_binary === 'function') {
-      patch(Object.getPrototypeOf(canvas));
-      model.send({type: 'ready'});
-    }
+    // never fails: without the patch the canvas keeps ipympl's own path (whole frames)
+    try {
+      const ref = model.get('canvas') || '';
+      const canvas = await model.widget_manager.get_model(ref.replace(/^IPY_MODEL_/, ''));
+      if (canvas && typeof canvas.handle_binary === 'function') {
+        patch(Object.getPrototypeOf(canvas));
+        model.send({type: 'ready'});
+      }
+    } catch (error) { /* the canvas was closed before the page saw it */ }
   },
 };
 """

@@ -29,7 +29,7 @@ def test_a_widget_whose_update_raises_fails_the_checks(lab, browser):
     try:
         assert notebook.error_outputs() == []          # it builds fine...
         changed, before, after = slider_changes_figure(notebook, 0, 2, "broken-widget",
-                                                       ".widget-htmlmath")
+                                                       ".widget-html, .widget-htmlmath")
         # ...but moving its slider neither redraws nor updates the text, and the exception
         # lands in JupyterLab's log console: each of these fails the interaction tests
         assert changed < MIN_CHANGED

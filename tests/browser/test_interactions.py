@@ -41,7 +41,7 @@ def slider_changes_figure(notebook, view_index, slider_index, name, text_selecto
 def test_quaternion_slider_turns_the_f_and_changes_the_matrix(open_notebook):
     notebook = open_notebook("notebooks/ch03_transformations.ipynb")
     changed, before, after = slider_changes_figure(notebook, 0, 2, "quaternion-explorer",
-                                                   ".widget-htmlmath")
+                                                   ".widget-html, .widget-htmlmath")
     assert changed > MIN_CHANGED
     assert before != after and "70" in after          # 50 + 20 steps of 1 degree
     assert notebook.log_console_count() == 0 and notebook.console_errors == []
@@ -89,13 +89,12 @@ def test_transfer_function_point_dragged_up_changes_the_rendered_images(open_not
     point = view.locator(".widget-slider:has-text('point') .widget-readout").first
     before_opacity = float(readout.inner_text())
     before = notebook.screenshot("transfer-function-before", canvas).read_bytes()
-    # widgets/transfer_function.py: the opacity axes span figure fractions x 0.07..0.98,
-    # y 0.1439..0.4377 with limits x -0.015..1.015, y -0.04..1.06; the "skin" preset's point 6
-    # sits at (0.8, 0.3)
-    layout = dict(xlim=(-0.015, 1.015), ylim=(-0.04, 1.06), left=0.07, right=0.98,
-                  bottom=0.1439, top=0.1439 + 0.2938)
-    start = data_to_canvas_fraction(0.8, 0.3, **layout)
-    end = data_to_canvas_fraction(0.8, 0.75, **layout)
+    # where the "skin" preset's point 6, at (0.8, 0.3), and the drop at (0.8, 0.75) lie on the
+    # canvas: the same figure built headless (the lesson's explorer has its default layout)
+    from course_lib.widgets.transfer_function import TransferFunctionExplorer
+    headless = TransferFunctionExplorer()
+    start = headless._canvas_fraction(headless.drag.ax, (0.8, 0.3))
+    end = headless._canvas_fraction(headless.drag.ax, (0.8, 0.75))
     drag_on_canvas(canvas, start, end)
     view.page.wait_for_timeout(2500)                   # the full ray cast after the drop
     after = notebook.screenshot("transfer-function-after", canvas).read_bytes()
