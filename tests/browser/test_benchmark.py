@@ -1,17 +1,34 @@
 """The browser benchmark works (one explorer, few samples): it must not rot between real
 measurements. Behaviour only, no timing: every input reached a frame, the frame could be
 followed back through the kernel to its input, and the report has its three tables."""
+import json
 import math
+import subprocess
+import sys
+from pathlib import Path
 
 from benchmarks import browser as bench
 
+ROOT = Path(__file__).resolve().parents[2]
 
-def test_the_browser_benchmark_follows_inputs_to_frames(lab, browser):
-    # the tests' own server and chromium (a second playwright in one process cannot start)
-    rows, lesson = bench.measure_lesson(browser, lab, "notebooks/ch05_culling_hse.ipynb",
-                                        samples=5, seconds=1.0,
-                                        only={"CohenSutherlandExplorer"})
-    lessons = [lesson]
+
+RUN = """
+import json, sys
+from benchmarks import browser
+rows, lessons = browser.run(quick=True, notebooks=["notebooks/ch05_culling_hse.ipynb"],
+                            only={"CohenSutherlandExplorer"})
+print(json.dumps({"rows": rows, "lessons": lessons}))
+"""
+
+
+def test_the_browser_benchmark_follows_inputs_to_frames():
+    # in a process of its own: its own JupyterLab and chromium, as `python -m benchmarks
+    # --browser` has them (a second sync playwright cannot start beside the session's)
+    done = subprocess.run([sys.executable, "-c", RUN], cwd=ROOT, capture_output=True,
+                          text=True, timeout=600)
+    assert done.returncode == 0, done.stderr[-3000:]
+    result = json.loads(done.stdout.strip().splitlines()[-1])
+    rows, lessons = result["rows"], result["lessons"]
     assert [r["input"].split()[0] for r in rows] == ["slider", "drag"], rows
     for row in rows:
         assert row["samples"] >= 3, f"{row['input']}: most single inputs gave no frame"
