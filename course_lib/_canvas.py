@@ -81,16 +81,8 @@ def _push_frames(canvas):
     canvas._course_draw_queued = False
 
     def seen(widget, content, buffers):
-        if isinstance(content, dict) and content.get("type") == "initialized":
+        if _initialized(content):
             canvas._course_shown = True
-            # a new page: whole frames until its frame decoder says it is ready. The decoder
-            # is made now, when the page holds the canvas's model (a static figure, closed
-            # before the page saw it, gets none)
-            canvas._course_regions = False
-            canvas._course_last = None
-            if getattr(canvas, "comm", None) is not None and \
-                    getattr(canvas, "_course_frame_decoder", None) is None:
-                canvas._course_frame_decoder = _frame_decoder(canvas)
 
     def draw_now():
         canvas._course_draw_queued = False
@@ -168,13 +160,31 @@ def _placed_frames(canvas):
 
     send_binary = canvas.send_binary
 
+    def new_page(widget, content, buffers):
+        if not _initialized(content):
+            return
+        # a new page: whole frames until its frame decoder says it is ready. The decoder is
+        # made now, when the page holds the canvas's model (a static figure, closed before
+        # the page saw it, gets none)
+        canvas._course_regions = False
+        canvas._course_last = None
+        if getattr(canvas, "comm", None) is not None and \
+                getattr(canvas, "_course_frame_decoder", None) is None:
+            canvas._course_frame_decoder = _frame_decoder(canvas)
+
     def send(data):
         place, canvas._course_place = canvas._course_place, None
         if place is None:
             return send_binary(data)
         canvas.send({"data": json.dumps({"type": "binary", "x": place[0], "y": place[1]})},
                     buffers=[data])
+    canvas.on_msg(new_page)
     canvas.send_binary = send
+
+
+def _initialized(content):
+    """Whether an ipympl canvas's message is its page's "initialized" (a new front end)."""
+    return isinstance(content, dict) and content.get("type") == "initialized"
 
 
 #: The front-end module (ES module, run by anywidget in the page when the model is created):
