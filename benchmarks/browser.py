@@ -19,11 +19,12 @@ trip to the kernel's subshell thread, the wait for the kernel's main thread, the
 painting. Browser times are ``performance.timeOrigin + performance.now()`` and kernel times
 ``time.time()``: the same clock of the same machine, in milliseconds.
 """
-import json
 import statistics
 import tempfile
 import time
 from pathlib import Path
+
+import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -132,15 +133,6 @@ print("ok")
 """
 
 
-def _percentile(values, q):
-    values = sorted(values)
-    if not values:
-        return float("nan")
-    k = (len(values) - 1) * q
-    lo, hi = int(k), min(int(k) + 1, len(values) - 1)
-    return values[lo] + (values[hi] - values[lo]) * (k - lo)
-
-
 class Bench:
     """One lesson open in the browser, with the page's and the kernel's records."""
 
@@ -225,11 +217,6 @@ class Bench:
         return len(during) / ((t1 - t0) / 1000), behind, moves
 
 
-def _slider_gestures(view_locator, slider_index):
-    handle = view_locator.locator(".widget-slider").nth(slider_index).locator(".noUi-handle").first
-    return handle
-
-
 def _breakdown(samples, kernel_log):
     """Median milliseconds of each stage of a frame's path, over the samples that could be
     followed from the input to the frame (the frame's message names the input's message as its
@@ -262,19 +249,10 @@ def _breakdown(samples, kernel_log):
     return {name: (statistics.median(v) if v else None) for name, v in stages.items()}
 
 
-PROBE = """
-import json
-from course_lib.widgets._base import Explorer
-print(json.dumps([{"class": type(Out.get(n)).__name__,
-                   "gestures": Out[n].mouse_gestures() if isinstance(Out.get(n), Explorer)
-                   else []} for n in COUNTS]))
-"""
-
-
 def measure_lesson(browser, server, path, samples, seconds, only=None):
     """Rows of one lesson (one per explorer control measured) and its time to live."""
     from tests.browser.lab import (WIDGET_VIEW, NotebookPage, PageKernel,
-                                   cell_execution_counts, expected_widget_cells)
+                                   expected_widget_cells, page_explorers)
 
     notebook = NotebookPage(browser, server, path)
     page = notebook.page
@@ -315,9 +293,7 @@ def measure_lesson(browser, server, path, samples, seconds, only=None):
     time.sleep(1.0)
     kernel = PageKernel(server, path)
     try:
-        counts = cell_execution_counts(notebook)
-        explorers = json.loads(kernel.run(PROBE.replace("COUNTS", repr(counts))).strip()
-                               .splitlines()[-1])
+        explorers = page_explorers(notebook, kernel)
         kernel.run(KERNEL_PROBE)
         bench = Bench(notebook, kernel)
         views = page.locator(WIDGET_VIEW)
@@ -406,7 +382,7 @@ def _row(name, what, samples, fps, behind, moves, kernel_log):
     latency = [s["shown"] - s["input"] for s in samples]
     return {"explorer": name, "input": what, "samples": len(latency),
             "median_ms": statistics.median(latency) if latency else float("nan"),
-            "p90_ms": _percentile(latency, 0.9), "fps": fps, "behind_ms": behind,
+            "p90_ms": float(np.percentile(latency, 90)) if latency else float("nan"), "fps": fps, "behind_ms": behind,
             "moves": moves, "breakdown": _breakdown(samples, kernel_log)}
 
 

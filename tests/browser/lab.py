@@ -350,3 +350,18 @@ def cell_execution_counts(notebook):
              const digits = prompt.textContent.match(/\\d+/);
              return digits ? Number(digits[0]) : null;
            })""", WIDGET_VIEW)
+
+
+_EXPLORERS = """
+import json
+from course_lib.widgets._base import Explorer
+print(json.dumps([{"class": type(Out.get(n)).__name__,
+                   "gestures": Out[n].mouse_gestures() if isinstance(Out.get(n), Explorer)
+                   else []} for n in COUNTS]))
+"""
+
+
+def page_explorers(notebook, kernel):
+    """For each widget view of the page, in page order, the class of the object its cell
+    displayed and that explorer's mouse gestures (read in the page's kernel)."""
+    return kernel.json(_EXPLORERS.replace("COUNTS", repr(cell_execution_counts(notebook))))

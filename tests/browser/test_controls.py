@@ -23,8 +23,8 @@ import pytest
 
 from .controls import drive
 from .look import look_problems
-from .lab import (ROOT, WIDGET_VIEW, NotebookPage, PageKernel, cell_execution_counts,
-                  expected_widget_cells)
+from .lab import (ROOT, WIDGET_VIEW, NotebookPage, PageKernel, expected_widget_cells,
+                  page_explorers)
 
 NOTEBOOKS = sorted(p.relative_to(ROOT).as_posix() for p in (ROOT / "notebooks").glob("*.ipynb"))
 MIN_CHANGED = 30             # pixels: a moved marker or a recoloured patch changes more
@@ -53,14 +53,6 @@ EXPECTED = {
     ("MockExamWidget", "button|Next question|1", None): ("text", "a question is text"),
     ("MockExamWidget", "button|New exam|1", None): ("text", "a question is text"),
 }
-
-PROBE = """
-import json
-from course_lib.widgets._base import Explorer
-print(json.dumps([{"class": type(Out.get(n)).__name__,
-                   "gestures": Out[n].mouse_gestures() if isinstance(Out.get(n), Explorer)
-                   else []} for n in COUNTS]))
-"""
 
 # What the server's log must never show: VTK errors, a C++ abort, a kernel that died.
 SERVER_LOG_PROBLEMS = re.compile(r"ERR\||terminate called|KernelRestarter|restarting kernel|"
@@ -94,8 +86,7 @@ def test_lesson_runs_and_every_control_of_every_explorer_changes_its_picture(lab
         if not expected_widget_cells(path):
             return
         kernel.run("_course_same_kernel = 'yes'")
-        counts = cell_execution_counts(notebook)
-        explorers = kernel.json(PROBE.replace("COUNTS", repr(counts)))
+        explorers = page_explorers(notebook, kernel)
         views = notebook.page.locator(WIDGET_VIEW)
         assert views.count() == len(explorers)
         # first the look, as Run All leaves it: every label whole, nothing clipped
