@@ -303,7 +303,7 @@ def test_wrong_answers_get_teaching_feedback():
         solve, _ = SPECS[name]
         for ex in exercises(name, range(20)):
             right, _ = solve(ex)
-            fb = ex.check(np.asarray(right) + 0.37)
+            fb = ex.check(np.asarray(right) + 0.37 + 0.05 * np.abs(right))
             assert fb.status == "wrong" and len(fb.message) > 80, (ex, fb)
     for ex in exercises("DesignOpacity", range(20)):
         right, _ = design_opacity(ex)

@@ -240,7 +240,7 @@ def ao_wall(ex):
 NUMBER_GARBAGE = ["I", {"I": 1}, [1, 2], [[1], [2, 3]], [math.nan], math.inf]
 VECTOR_GARBAGE = ["R", {"R": 1}, [[1, 2], [3]], [1, 2], np.eye(3), [math.nan, 0, 0]]
 FOUR_GARBAGE = ["H", {"h": 1}, [1, 2, 3], [[1, 2], [3, 4]], [1, 2, 3, math.nan], [1] * 5]
-PAIR_GARBAGE = ["g", {"g": 1}, [1], [1, 2, 3], [[1, 2]], [math.nan, 1]]
+PAIR_GARBAGE = ["g", {"g": 1}, [1], [1, 2, 3], [[1, 2], [3, 4]], [math.nan, 1]]
 METHOD_GARBAGE = ["toon", 3, ["phong"], {"phong": 1}, "wireframe", 0.5]
 
 # class name: (independent answer and mistakes, answer form)

@@ -265,7 +265,7 @@ def checkerboard(ex):
 NUMBER_GARBAGE = ["t", {"t": 1}, [1, 2], [[1], [2, 3]], [math.nan], math.inf]
 UV_GARBAGE = ["uv", {"u": 1}, [[1, 2], [3]], [1, 2, 3], np.eye(2), [math.nan, 0]]
 VECTOR3_GARBAGE = ["l", {"l": 1}, [[1, 2], [3]], [1, 2], np.eye(3), [math.nan, 0, 0]]
-THREE_GARBAGE = ["j", {"j": 1}, [1, 2], [[1, 2, 3]], [1, math.nan, 2], [1, 2, 3, 4]]
+THREE_GARBAGE = ["j", {"j": 1}, [1, 2], [[1, 2, 3], [4, 5, 6]], [1, math.nan, 2], [1, 2, 3, 4]]
 FOUR_GARBAGE = ["rho", {"r": 1}, [1, 2, 3], [[1, 2], [3, 4]], [1, 2, 3, math.nan], [1] * 5]
 
 # class name: (independent answer and mistakes, answer form)

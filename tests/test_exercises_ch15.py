@@ -159,7 +159,7 @@ SPECS = {
     "RayTreeCount": (ray_tree_count, "parts"),
     "BVHSavings": (bvh_savings, "parts"),
 }
-GARBAGE = {"vector": ["x", [1, 2], [[1, 2, 3]], [1, float("nan"), 2], {"a": 1}],
+GARBAGE = {"vector": ["x", [1, 2], [[1, 2, 3], [4, 5, 6]], [1, float("nan"), 2], {"a": 1}],
            "number": ["x", [1, 2], [float("nan")], {"a": 1}],
            "parts": ["x", [1], [[1, 2, 3, 4, 5]], {"a": 1}]}
 

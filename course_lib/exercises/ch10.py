@@ -93,7 +93,7 @@ class NormalizeValues(_Chapter10):
     answer_form = "vector"
     what = "the list of normalised values"
     may_coincide = ("no offset", "unit interval", "no shift")
-    hint = (r"Go step by step for each value: subtract $a$, divide by $b - a$ (now it is in "
+    advice = (r"Go step by step for each value: subtract $a$, divide by $b - a$ (now it is in "
             r"$[0, 1]$), multiply by $d - c$, add $c$.")
 
     def draw(self, rng):
@@ -161,7 +161,7 @@ class Denormalize(_Chapter10):
     answer_form = "number"
     what = "the data value"
     may_coincide = ("ignored c",)
-    hint = (r"Undo the steps of the normalisation in reverse order: subtract $c$, divide by "
+    advice = (r"Undo the steps of the normalisation in reverse order: subtract $c$, divide by "
             r"$d - c$, multiply by $b - a$, add $a$.")
 
     def draw(self, rng):
@@ -251,7 +251,7 @@ class TransferValues(_Chapter10):
     title = "Evaluate a transfer function"
     answer_form = "vector"
     what = "the list of intensities"
-    hint = (r"For each scalar find the two control points around it, "
+    advice = (r"For each scalar find the two control points around it, "
             r"$s_i \le s \le s_{i+1}$, and interpolate: "
             r"$f(s) = f_i + \frac{s - s_i}{s_{i+1} - s_i}(f_{i+1} - f_i)$. Outside the control "
             r"points the end value holds.")
@@ -319,7 +319,7 @@ class ThresholdBands(_Chapter10):
     title = "Thresholding with a step function"
     answer_form = "vector"
     what = "the list of values"
-    hint = (r"For each scalar find the band $s_i \le s < s_{i+1}$ it falls in and take that "
+    advice = (r"For each scalar find the band $s_i \le s < s_{i+1}$ it falls in and take that "
             r"band's value $v_i$; no interpolation.")
 
     def draw(self, rng):
@@ -523,7 +523,7 @@ class ColormapLookup(_Chapter10):
     answer_form = "vector"
     what = "the colour"
     may_coincide = ("forgot a",)
-    hint = (r"Normalise first, $t = \frac{v - a}{b - a}$; then $p = t\,(n - 1)$ tells between "
+    advice = (r"Normalise first, $t = \frac{v - a}{b - a}$; then $p = t\,(n - 1)$ tells between "
             r"which two control colours you are ($k = \lfloor p \rfloor$) and how far "
             r"($f = p - k$): the colour is $(1 - f)\,C_k + f\,C_{k+1}$, channel by channel.")
 
@@ -608,7 +608,7 @@ class LightnessOfColour(_Chapter10):
     title = "Lightness of a colour"
     answer_form = "number"
     what = r"$L^*$"
-    hint = (r"Three steps: linearise each channel, weigh them into $Y$, then "
+    advice = (r"Three steps: linearise each channel, weigh them into $Y$, then "
             r"$L^* = 116\,Y^{1/3} - 16$.")
 
     def draw(self, rng):

@@ -94,7 +94,7 @@ class RaySphereHit(DrawnExercise):
     title = "A ray hits a sphere"
     answer_form = "point"
     what = "the hit point"
-    hint = (r"Solve $a t^2 + b t + c' = 0$ with $a = d \cdot d$, $b = 2\, d \cdot (o - c)$, "
+    advice = (r"Solve $a t^2 + b t + c' = 0$ with $a = d \cdot d$, $b = 2\, d \cdot (o - c)$, "
             r"$c' = \lVert o - c \rVert^2 - r^2$; take the smaller root (the ray enters there) "
             r"and put it into $o + t\,d$.")
 
@@ -177,7 +177,7 @@ class RayTriangleHit(_Parts):
     title = "A ray hits a triangle"
     what = "your answer"
     form_hint = r"`[t, u, v]`."
-    hint = (r"Write $o + t\,d = v_0 + u\,e_1 + v\,e_2$ with $e_1 = v_1 - v_0$, "
+    advice = (r"Write $o + t\,d = v_0 + u\,e_1 + v\,e_2$ with $e_1 = v_1 - v_0$, "
             r"$e_2 = v_2 - v_0$ as three linear equations in $t, u, v$ and solve them "
             r"(Cramer's rule, or `np.linalg.solve`).")
 
@@ -257,7 +257,7 @@ class ReflectedRay(DrawnExercise):
     title = "The reflected ray"
     answer_form = "vector"
     what = "the reflected direction"
-    hint = (r"Normalize the normal, then $r = d - 2 (d \cdot \hat n)\, \hat n$. Check: "
+    advice = (r"Normalize the normal, then $r = d - 2 (d \cdot \hat n)\, \hat n$. Check: "
             r"$r \cdot \hat n = -d \cdot \hat n$ (it leaves at the angle it came in).")
 
     def draw(self, rng):
@@ -321,7 +321,7 @@ class RefractedRay(DrawnExercise):
     title = "The refracted ray (Snell's law)"
     answer_form = "vector"
     what = "the refracted direction"
-    hint = (r"Snell: $\eta_1 \sin\theta_1 = \eta_2 \sin\theta_2$. The refracted ray stays in the "
+    advice = (r"Snell: $\eta_1 \sin\theta_1 = \eta_2 \sin\theta_2$. The refracted ray stays in the "
             r"plane of $d$ and $n$, on the other side of the surface, at the angle $\theta_2$ "
             r"from $-n$; or use $t = \eta\, d + (\eta c_1 - c_2)\, n$ with "
             r"$\eta = \eta_1/\eta_2$.")
@@ -388,7 +388,7 @@ class CriticalAngle(DrawnExercise):
     title = "The critical angle"
     answer_form = "number"
     what = "the critical angle"
-    hint = (r"At the critical angle the refracted ray grazes the surface, $\theta_2 = 90^\circ$: "
+    advice = (r"At the critical angle the refracted ray grazes the surface, $\theta_2 = 90^\circ$: "
             r"$\eta_1 \sin\theta_c = \eta_2$.")
 
     def draw(self, rng):
@@ -437,7 +437,7 @@ class SchlickReflectance(DrawnExercise):
     title = "Fresnel reflectance by Schlick's approximation"
     answer_form = "number"
     what = "the reflectance F"
-    hint = (r"$R_0 = \left(\frac{\eta_1 - \eta_2}{\eta_1 + \eta_2}\right)^2$ is the reflectance "
+    advice = (r"$R_0 = \left(\frac{\eta_1 - \eta_2}{\eta_1 + \eta_2}\right)^2$ is the reflectance "
             r"head on; $F = R_0 + (1 - R_0)(1 - \cos\theta)^5$ with $\theta$ the angle of "
             r"incidence.")
 
@@ -503,7 +503,7 @@ class ShadowRay(DrawnExercise):
     title = "A shadow ray"
     answer_form = "number"
     what = "the intensity"
-    hint = (r"Cast the shadow ray $P + t\,L$ towards the light; if it hits the ball for a $t$ "
+    advice = (r"Cast the shadow ray $P + t\,L$ towards the light; if it hits the ball for a $t$ "
             r"between 0 and the distance to the light, only the ambient term $k_a$ is left. "
             r"Otherwise $I = k_a + k_d\, (N \cdot L)$ with $L$ normalized.")
 
@@ -591,7 +591,7 @@ class MirrorChainColour(DrawnExercise):
     title = "The colour of a chain of reflections"
     answer_form = "number"
     what = "the pixel intensity"
-    hint = (r"Work from the deepest ray back: $I_k = I_{local,k} + k_{r,k}\, I_{k+1}$, with "
+    advice = (r"Work from the deepest ray back: $I_k = I_{local,k} + k_{r,k}\, I_{k+1}$, with "
             r"nothing beyond the depth limit.")
 
     def draw(self, rng):
@@ -659,7 +659,7 @@ class RayTreeCount(_Parts):
 
     title = "Counting the rays of a ray tree"
     form_hint = r"`[reflected/refracted/primary rays, shadow rays]`."
-    hint = (r"Draw the tree: the primary ray at level 0; every ray of level $k < d$ has one "
+    advice = (r"Draw the tree: the primary ray at level 0; every ray of level $k < d$ has one "
             r"child (mirror) or two (glass: reflected and refracted). Every node is a hit, and "
             r"every hit casts one shadow ray per light.")
 
@@ -732,7 +732,7 @@ class BVHSavings(_Parts):
 
     title = "What a BVH saves"
     form_hint = r"`[depth, box tests, triangle tests, factor]`."
-    hint = (r"Depth: halve $P$ until $k$ triangles are left, $m = \log_2(P/k)$. Box tests: 2 per "
+    advice = (r"Depth: halve $P$ until $k$ triangles are left, $m = \log_2(P/k)$. Box tests: 2 per "
             r"inner level. Factor: $P$ divided by (box tests + triangle tests).")
 
     def draw(self, rng):

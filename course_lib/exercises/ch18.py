@@ -108,7 +108,7 @@ class SquareCaseIndex(_Chapter18):
     answer_form = "number"
     what = "the case index"
     may_coincide = ("strict",)
-    hint = (r"Mark each corner with 1 if $f_k \ge c$, else 0, and add up $2^k$ over the marked "
+    advice = (r"Mark each corner with 1 if $f_k \ge c$, else 0, and add up $2^k$ over the marked "
             r"corners $k$.")
 
     def draw(self, rng):
@@ -432,7 +432,7 @@ class CubeTriangleCount(_Chapter18):
     answer_form = "number"
     what = "the number of triangles"
     may_coincide = ("one polygon", "corners", "one per polygon")
-    hint = (r"Find the edges with one end above and one below; they group into polygons around "
+    advice = (r"Find the edges with one end above and one below; they group into polygons around "
             r"the above corners; a polygon with $m$ vertices gives $m - 2$ triangles.")
 
     def draw(self, rng):
@@ -509,7 +509,7 @@ class CompositeFrontToBack(_Chapter18):
     title = "Compositing front to back"
     answer_form = "vector"
     what = "$[C, A]$"
-    hint = (r"Keep two running numbers, starting at $C = A = 0$; for each sample from the front "
+    advice = (r"Keep two running numbers, starting at $C = A = 0$; for each sample from the front "
             r"add $(1 - A)\,\alpha_i c_i$ to $C$ (what still shines through times the "
             r"sample's contribution), then $(1 - A)\,\alpha_i$ to $A$.")
 
@@ -569,7 +569,7 @@ class EarlyTermination(_Chapter18):
     title = "Early ray termination"
     answer_form = "number"
     what = "the number of samples"
-    hint = (r"Track $A \leftarrow A + (1 - A)\,\alpha_i$ (or the transparency "
+    advice = (r"Track $A \leftarrow A + (1 - A)\,\alpha_i$ (or the transparency "
             r"$T = 1 - A$, multiplied by $1 - \alpha_i$ at each sample) and stop as soon as "
             r"$A$ reaches the threshold.")
 
@@ -628,7 +628,7 @@ class OpacityCorrection(_Chapter18):
     title = "Opacity correction for the step size"
     answer_form = "number"
     what = "the corrected opacity"
-    hint = (r"Transparencies multiply: a slab of thickness $\Delta$ lets "
+    advice = (r"Transparencies multiply: a slab of thickness $\Delta$ lets "
             r"$(1 - \alpha)^{\Delta}$ through, so its opacity is $1 - (1 - \alpha)^{\Delta}$.")
 
     def draw(self, rng):
@@ -687,7 +687,7 @@ class MaxIntensityProjection(_Chapter18):
     answer_form = "matrix"
     what = "the projected image"
     transform = False
-    hint = r"Along each ray (fix the two other indices) keep the largest of the three samples."
+    advice = r"Along each ray (fix the two other indices) keep the largest of the three samples."
 
     def draw(self, rng):
         self.volume = rng.integers(0, 10, size=(3, 3, 3)).astype(float)
@@ -768,7 +768,7 @@ class RK4Step(_Chapter18):
     answer_form = "point"
     what = "the new point"
     may_coincide = ("no h",)
-    hint = (r"Compute the four slopes one after the other, each from the previous one "
+    advice = (r"Compute the four slopes one after the other, each from the previous one "
             r"($k_2$ and $k_3$ half a step ahead, $k_4$ a full step), then take the weighted "
             r"average $\frac16 (k_1 + 2k_2 + 2k_3 + k_4)$ times $h$.")
 
@@ -846,7 +846,7 @@ class EulerDrift(_Chapter18):
     title = "Euler's drift on a circular flow"
     answer_form = "number"
     what = "the radius"
-    hint = (r"Each Euler step is perpendicular to the radius and $h\,r$ long: Pythagoras gives "
+    advice = (r"Each Euler step is perpendicular to the radius and $h\,r$ long: Pythagoras gives "
             r"the new radius $r\sqrt{1 + h^2}$; repeat $n$ times.")
 
     def draw(self, rng):

@@ -20,30 +20,50 @@ ambiguous, and they check an answer by its form (a matrix, a vector, a quaternio
 point, or a form of their own). :func:`pick`, :func:`small_ints` and :func:`data_note` help to
 draw numbers that are pleasant by hand and to write the statement.
 
+**The tolerance policy** is written once, in :func:`tolerance` and :func:`agrees`, and every
+diagnosis uses it: a real answer is right to 3 significant digits (or 3 decimals below 1);
+whole numbers (counts, indices, outcodes; ``5.0`` is the whole number 5, ``True`` is not 1)
+are compared exactly, with an "off by one" diagnosis; an answer that is the right one rounded
+to too few digits (:func:`rounding_of`) is told "close: give more digits" before any other
+diagnosis; a column vector ``(n, 1)`` reads as the vector it is.
+
+**Help on request** (:mod:`._core.guidance`): every exercise has ``hint()`` (the next of at
+least three hints) and ``solution()`` (the steps of the student's own variant, a
+:class:`Worked`), and every check, hint and solution seen is recorded in the progress file
+when recording is on (in a notebook). A subclass writes ``hints()`` and ``worked()``.
+
 The machinery lives in :mod:`course_lib.exercises._core`, one module per topic:
-``feedback`` (:class:`Feedback`, :class:`Mistake` and the diagnoses), ``drawn``
-(:class:`Exercise`, :class:`DrawnExercise`, :class:`PartsAnswer` and how the variants are
-drawn) and ``writing`` (pleasant numbers and the statement's wording); import it from here.
+``feedback`` (:class:`Feedback`, :class:`Mistake`, the tolerance policy and the diagnoses),
+``drawn`` (:class:`Exercise`, :class:`DrawnExercise`, :class:`PartsAnswer` and how the variants
+are drawn), ``guidance`` (hints, worked solutions, recording) and ``writing`` (pleasant numbers
+and the statement's wording); import it from here.
 """
-from ._core.feedback import (ATOL, UNANSWERED, UNEXPLAINED, Feedback, Mistake, close,
-                             diagnose_matrix, diagnose_number, diagnose_parts, diagnose_vector,
-                             has_placeholder, hinted, is_unanswered, read_floats, read_names)
-from ._core.drawn import (APART, MAX_DRAWS, SAME, DrawnExercise, Exercise, PartsAnswer, gap,
-                          parts_separated, well_separated)
+from ._core.feedback import (ATOL, SIGNIFICANT, UNANSWERED, UNEXPLAINED, Feedback, Mistake,
+                             agrees, as_vector, close, diagnose_matrix, diagnose_number,
+                             diagnose_parts, diagnose_vector, has_placeholder, hinted,
+                             is_unanswered, read_floats, read_names, rounding_of, tolerance)
+from ._core.drawn import (APART, MAX_DRAWS, SAME, TOLERANCES_APART, DrawnExercise, Exercise,
+                          PartsAnswer, gap, parts_separated, well_separated)
+from ._core.guidance import Guidance, Worked, exercise_key, quietly
 from ._core.writing import DECIMALS, data_note, latex_fraction, latex_vector, pick, small_ints
 
 __all__ = [
     "DrawnExercise",
     "Exercise",
     "Feedback",
+    "Guidance",
     "Mistake",
     "PartsAnswer",
+    "Worked",
+    "agrees",
+    "as_vector",
     "close",
     "data_note",
     "diagnose_matrix",
     "diagnose_number",
     "diagnose_parts",
     "diagnose_vector",
+    "exercise_key",
     "gap",
     "has_placeholder",
     "hinted",
@@ -52,8 +72,11 @@ __all__ = [
     "latex_vector",
     "parts_separated",
     "pick",
+    "quietly",
     "read_floats",
     "read_names",
+    "rounding_of",
     "small_ints",
+    "tolerance",
     "well_separated",
 ]

@@ -99,7 +99,7 @@ class _Parts(DrawnExercise):
         return parts_separated(self._parts())
 
     def _check(self, answer):          # diagnose_parts ends with the hint: not hinted again
-        return diagnose_parts(answer, self._parts(), "your answer", self.form_hint, self.hint)
+        return diagnose_parts(answer, self._parts(), "your answer", self.form_hint, self.advice)
 
 
 class _Record(DrawnExercise):
@@ -139,5 +139,5 @@ class _Record(DrawnExercise):
             if value == mistake.value:
                 return Feedback("wrong", mistake.explanation, mistake.key)
         off = [name for name, a, b in zip(self.fields, value, self.expected) if a != b]
-        return Feedback("wrong", "Not right yet: " + ", ".join(off) + ". " + self.hint,
+        return Feedback("wrong", "Not right yet: " + ", ".join(off) + ". " + self.advice,
                         "entries differ")

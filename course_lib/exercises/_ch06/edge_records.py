@@ -44,7 +44,7 @@ class WingedEdgeRecord(_Record):
     fields = _WING_FIELDS
     form_hint = ("Give 6 whole numbers `[left_face, right_face, left_prev, left_next, "
                  "right_prev, right_next]`, or a dict with those keys.")
-    hint = (r"Find the face that lists start then end (the left face) and the one that lists "
+    advice = (r"Find the face that lists start then end (the left face) and the one that lists "
             r"end then start (the right face). Around each face, counter-clockwise, the "
             r"*prev* wing is the edge just before $e$ and the *next* wing the edge just after.")
 
@@ -137,7 +137,7 @@ class HalfEdgeWalk(_Parts):
     title = "Walk a half-edge structure"
     form_hint = "`[g, v]`: the half-edge reached and its target vertex, two whole numbers."
     may_coincide = ("inside out", "next and prev swapped")
-    hint = (r"Work from the inside out: apply the innermost function to $h$ first, read the "
+    advice = (r"Work from the inside out: apply the innermost function to $h$ first, read the "
             r"result in the table, then apply the next function to that row.")
 
     def draw(self, rng):
@@ -227,7 +227,7 @@ class OneRing(_Record):
     """
 
     title = "The one-ring of a vertex"
-    hint = (r"Repeat $h \leftarrow \operatorname{twin}(\operatorname{prev}(h))$ until you are "
+    advice = (r"Repeat $h \leftarrow \operatorname{twin}(\operatorname{prev}(h))$ until you are "
             r"back at the first half-edge, and write down the target of each $h$.")
 
     def draw(self, rng):

@@ -40,7 +40,7 @@ class EulerCounts(_Parts):
     title = "Euler's formula: count the edges and faces"
     form_hint = "`[E, F]`, two whole numbers."
     may_coincide = ("genus ignored",)
-    hint = (r"Use two equations: Euler's $V - E + F = 2 - 2g$ and the edge count "
+    advice = (r"Use two equations: Euler's $V - E + F = 2 - 2g$ and the edge count "
             r"$kF = 2E$ (each face has $k$ edges, each edge lies on 2 faces).")
 
     def draw(self, rng):
@@ -114,7 +114,7 @@ class GenusFromCounts(DrawnExercise):
     answer_form = "number"
     what = "the genus"
     may_coincide = ("boundary ignored", "no half", "wrong sign")
-    hint = (r"Compute $\chi = V - E + F$, then solve $\chi = 2 - 2g - b$ for $g$: "
+    advice = (r"Compute $\chi = V - E + F$, then solve $\chi = 2 - 2g - b$ for $g$: "
             r"$g = (2 - b - \chi) / 2$.")
 
     def draw(self, rng):
@@ -183,7 +183,7 @@ class EdgeCollapseCounts(_Parts):
     title = "Counts after edge collapses"
     form_hint = "`[V, E, F]`, three whole numbers."
     may_coincide = ("boundary as interior",)
-    hint = (r"An interior edge collapse removes 1 vertex, 3 edges and 2 faces; a boundary edge "
+    advice = (r"An interior edge collapse removes 1 vertex, 3 edges and 2 faces; a boundary edge "
             r"collapse 1 vertex, 2 edges and 1 face. Check: $V - E + F$ does not change.")
 
     def draw(self, rng):

@@ -83,7 +83,7 @@ class VertexQuadric(DrawnExercise):
     title = "A vertex quadric"
     what = "the quadric Q"
     transform = False
-    hint = (r"Normalise each plane: divide $(a, b, c)$ and $d$ by $\sqrt{a^2 + b^2 + c^2}$; "
+    advice = (r"Normalise each plane: divide $(a, b, c)$ and $d$ by $\sqrt{a^2 + b^2 + c^2}$; "
             r"then $K_p = p\,p^T$ for $p = (a, b, c, d)$, and $Q$ is the sum of the $K_p$.")
 
     def draw(self, rng):
@@ -183,7 +183,7 @@ class CollapseCost(_TwoVertices):
     title = "The cost of an edge collapse"
     answer_form = "number"
     what = "the cost"
-    hint = (r"Add the quadrics, $\bar Q = Q_1 + Q_2$, write the midpoint with a 1 appended, "
+    advice = (r"Add the quadrics, $\bar Q = Q_1 + Q_2$, write the midpoint with a 1 appended, "
             r"$\bar v = (x, y, z, 1)$, and compute $\bar v^T \bar Q \bar v$.")
 
     def draw(self, rng):
@@ -246,7 +246,7 @@ class OptimalPosition(_TwoVertices):
 
     title = "The optimal position of the merged vertex"
     answer_form = "custom"
-    hint = (r"Split $\bar Q = Q_1 + Q_2$ into the $3 \times 3$ block $A$, the column $b$ "
+    advice = (r"Split $\bar Q = Q_1 + Q_2$ into the $3 \times 3$ block $A$, the column $b$ "
             r"(first three entries of the last column) and the corner $c$; solve "
             r"$A\,\bar v = -b$; the cost is $(\bar v, 1)^T \bar Q\, (\bar v, 1)$.")
 
@@ -309,7 +309,7 @@ class OptimalPosition(_TwoVertices):
 
     def _check(self, answer):          # diagnose_parts ends with the hint: not hinted again
         return diagnose_parts(answer, self._parts(), "your answer", "`[x, y, z, cost]`.",
-                              self.hint)
+                              self.advice)
 
     def statement(self):
         return (

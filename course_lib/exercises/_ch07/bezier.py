@@ -46,7 +46,7 @@ class DeCasteljauPoint(_Chapter7):
     answer_form = "point"
     what = "the curve point"
     may_coincide = ("t swapped",)
-    hint = (r"Run the triangle: $n$ rounds of $(1 - t)\,P_i + t\,P_{i+1}$ on neighbouring "
+    advice = (r"Run the triangle: $n$ rounds of $(1 - t)\,P_i + t\,P_{i+1}$ on neighbouring "
             r"points, each round one point fewer, until a single point is left.")
 
     def draw(self, rng):
@@ -118,7 +118,7 @@ class DeCasteljauLevel(_Points):
     title = "One level of de Casteljau's triangle"
     what = "the list of points"
     may_coincide = ("t swapped", "midpoints")
-    hint = (r"Level $r$ comes from level $r - 1$: "
+    advice = (r"Level $r$ comes from level $r - 1$: "
             r"$P_i^r = (1 - t)\,P_i^{r-1} + t\,P_{i+1}^{r-1}$, starting from the control "
             r"points, level 0.")
 
@@ -258,7 +258,7 @@ class BezierEndTangent(_Chapter7):
     answer_form = "vector"
     vector_like = True
     what = "the derivative"
-    hint = (r"Differentiate $\sum_i B_i^n(t) P_i$: at $t = 0$ only $P_0$ and $P_1$ survive, "
+    advice = (r"Differentiate $\sum_i B_i^n(t) P_i$: at $t = 0$ only $P_0$ and $P_1$ survive, "
             r"$C'(0) = n\,(P_1 - P_0)$, and at $t = 1$, $C'(1) = n\,(P_n - P_{n-1})$.")
 
     def draw(self, rng):
@@ -326,7 +326,7 @@ class BezierSubdivision(_Points):
     title = "Subdividing a Bézier curve"
     what = "the left control polygon"
     may_coincide = ("t swapped",)
-    hint = (r"Run de Casteljau's triangle for $t$ and take the **first** point of every level: "
+    advice = (r"Run de Casteljau's triangle for $t$ and take the **first** point of every level: "
             r"$P_0^0 = P_0, P_0^1, \dots, P_0^n = C(t)$.")
 
     def draw(self, rng):
@@ -386,7 +386,7 @@ class DegreeElevation(_Points):
 
     title = "Degree elevation of a Bézier curve"
     what = "the new control polygon"
-    hint = (r"Use $Q_i = \frac{i}{n+1}\,P_{i-1} + \left(1 - \frac{i}{n+1}\right) P_i$ for "
+    advice = (r"Use $Q_i = \frac{i}{n+1}\,P_{i-1} + \left(1 - \frac{i}{n+1}\right) P_i$ for "
             r"$i = 0, \dots, n + 1$ (with $n$ the old degree).")
 
     def draw(self, rng):

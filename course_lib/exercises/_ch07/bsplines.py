@@ -138,7 +138,7 @@ class CoxDeBoorBasis(_Chapter7):
     title = "B-spline basis functions by Cox-de Boor"
     answer_form = "vector"
     what = "the list of values"
-    hint = (r"Start with $N_{i,0}(t) = 1$ on the span that contains $t$ and 0 elsewhere, then "
+    advice = (r"Start with $N_{i,0}(t) = 1$ on the span that contains $t$ and 0 elsewhere, then "
             r"apply the recursion degree by degree; at every degree the values add up to 1 "
             r"inside the domain.")
 
@@ -215,7 +215,7 @@ class BasisSupport(_Chapter7):
     title = "Where a basis function is non-zero"
     answer_form = "vector"
     what = "the interval"
-    hint = (r"$N_{i,p}$ is built from $N_{i,0}, \dots, N_{i+p,0}$, the indicators of the "
+    advice = (r"$N_{i,p}$ is built from $N_{i,0}, \dots, N_{i+p,0}$, the indicators of the "
             r"$p + 1$ spans from $u_i$ to $u_{i+p+1}$.")
 
     def draw(self, rng):
@@ -405,7 +405,7 @@ class BSplinePoint(_Chapter7):
     title = "A B-spline point by de Boor's algorithm"
     answer_form = "point"
     what = "the curve point"
-    hint = (r"Find the span $[u_k, u_{k+1})$ of $t$, start from $P_{k-p}, \dots, P_k$ and "
+    advice = (r"Find the span $[u_k, u_{k+1})$ of $t$, start from $P_{k-p}, \dots, P_k$ and "
             r"blend $p$ times with $\alpha_i = \frac{t - u_i}{u_{i+p+1-r} - u_i}$ (or add up "
             r"$N_{i,p}(t)\,P_i$ with the Cox-de Boor values).")
 

@@ -33,7 +33,7 @@ class BezierSurfacePoint(_Chapter7):
     title = "A point of a Bézier patch"
     answer_form = "point"
     what = "the surface point"
-    hint = (r"Blend in both directions: $S(u, v) = \sum_i \sum_j B_i^m(u)\, B_j^n(v)\, "
+    advice = (r"Blend in both directions: $S(u, v) = \sum_i \sum_j B_i^m(u)\, B_j^n(v)\, "
             r"P_{ij}$, e.g. first the curve points $\sum_j B_j^n(v) P_{ij}$ of each row, then "
             r"blend those with $B_i^m(u)$.")
 

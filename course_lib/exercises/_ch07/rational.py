@@ -38,7 +38,7 @@ class RationalBezierPoint(_Chapter7):
     title = "A point of a rational Bézier curve"
     answer_form = "point"
     what = "the curve point"
-    hint = (r"Weight each control point, $w_i P_i$, blend with the Bernstein polynomials, and "
+    advice = (r"Weight each control point, $w_i P_i$, blend with the Bernstein polynomials, and "
             r"divide by $\sum_i B_i^2(t)\, w_i$, the same blend of the weights alone.")
 
     def draw(self, rng):

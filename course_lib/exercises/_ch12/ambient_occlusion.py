@@ -39,7 +39,7 @@ class AmbientOcclusionSamples(DrawnExercise):
     title = "Ambient occlusion from sample rays"
     answer_form = "number"
     what = "the ambient-occlusion factor"
-    hint = (r"Count the rays that are **not** blocked (no hit, or a hit beyond $D$) and divide "
+    advice = (r"Count the rays that are **not** blocked (no hit, or a hit beyond $D$) and divide "
             r"by the number of rays.")
 
     def draw(self, rng):
@@ -125,7 +125,7 @@ class AmbientOcclusionWall(DrawnExercise):
     title = "Ambient occlusion next to a wall"
     answer_form = "number"
     what = "the ambient-occlusion factor"
-    hint = (r"The top edge of the wall is seen at $\beta_0 = \arctan(a/h)$ from the normal, "
+    advice = (r"The top edge of the wall is seen at $\beta_0 = \arctan(a/h)$ from the normal, "
             r"$\sin\beta_0 = a/\sqrt{a^2 + h^2}$; the wall blocks the directions beyond it, "
             r"the fraction $(1 - \sin\beta_0)/2$.")
 

@@ -186,7 +186,7 @@ class GouraudVersusPhong(_Parts):
 
     title = "Gouraud against Phong shading"
     form_hint = "`[I_gouraud, I_phong]`."
-    hint = (r"Gouraud: evaluate $I = k_d \max(N \cdot L, 0) + k_s \max(R \cdot V, 0)^n$ at "
+    advice = (r"Gouraud: evaluate $I = k_d \max(N \cdot L, 0) + k_s \max(R \cdot V, 0)^n$ at "
             r"$A$ and at $B$ and average. Phong: average the normals, normalise, evaluate once.")
 
     def draw(self, rng):

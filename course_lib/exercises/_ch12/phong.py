@@ -53,7 +53,7 @@ class DiffuseTerm(DrawnExercise):
     answer_form = "number"
     what = "the diffuse intensity"
     may_coincide = ("sine",)
-    hint = (r"Use $I_d = k_d\, I_l \max(N \cdot L, 0)$ with the **unit** vector $L$ from the "
+    advice = (r"Use $I_d = k_d\, I_l \max(N \cdot L, 0)$ with the **unit** vector $L$ from the "
             r"point towards the light; $N \cdot L = \cos\theta$, the cosine of the angle of "
             r"incidence measured from the normal.")
 
@@ -163,7 +163,7 @@ class SpecularTerm(DrawnExercise):
     title = "The specular term"
     answer_form = "number"
     what = "the specular intensity"
-    hint = (r"Reflect first, $R = 2 (N \cdot L) N - L$, then $I_s = k_s\, I_l \max(R \cdot V, "
+    advice = (r"Reflect first, $R = 2 (N \cdot L) N - L$, then $I_s = k_s\, I_l \max(R \cdot V, "
             r"0)^n$: only the cosine is raised to the power $n$.")
 
     def draw(self, rng):
@@ -241,7 +241,7 @@ class PhongTotal(DrawnExercise):
     title = "The Phong illumination model"
     answer_form = "number"
     what = "the intensity"
-    hint = (r"Add the four terms: the emission $I_e$, the ambient $I_a k_a$, the diffuse "
+    advice = (r"Add the four terms: the emission $I_e$, the ambient $I_a k_a$, the diffuse "
             r"$k_d I_l \max(N \cdot L, 0)$ and the specular $k_s I_l \max(R \cdot V, 0)^n$ "
             r"with $R = 2 (N \cdot L) N - L$; both light terms are 0 when $N \cdot L \le 0$.")
 
@@ -352,7 +352,7 @@ class BlinnPhongHighlight(DrawnExercise):
 
     title = "Blinn-Phong's halfway vector"
     answer_form = "custom"
-    hint = (r"$H = (L + V) / \lVert L + V \rVert$ is the unit vector half-way between $L$ "
+    advice = (r"$H = (L + V) / \lVert L + V \rVert$ is the unit vector half-way between $L$ "
             r"and $V$; then $s = \max(N \cdot H, 0)^n$.")
 
     def draw(self, rng):
@@ -461,7 +461,7 @@ class DistanceAttenuation(DrawnExercise):
     title = "Attenuation with distance"
     answer_form = "number"
     what = "the arriving intensity"
-    hint = (r"Compute the distance $d = \lVert Q - P \rVert$, then "
+    advice = (r"Compute the distance $d = \lVert Q - P \rVert$, then "
             r"$f_{att}(d) = \frac{1}{a + b d + c d^2}$ and multiply by $I_l$.")
 
     def draw(self, rng):
@@ -526,7 +526,7 @@ class SeveralLights(DrawnExercise):
     title = "Several lights"
     answer_form = "number"
     what = "the intensity"
-    hint = (r"Each light adds its own diffuse term $k_d I_l \max(N \cdot L_l, 0)$; the ambient "
+    advice = (r"Each light adds its own diffuse term $k_d I_l \max(N \cdot L_l, 0)$; the ambient "
             r"term $I_a k_a$ is added once.")
 
     def draw(self, rng):

@@ -39,7 +39,7 @@ class ReflectionVector(DrawnExercise):
     title = "The mirror direction R"
     answer_form = "vector"
     what = "the vector R"
-    hint = (r"Normalise the normal first, $\hat N = N / \lVert N \rVert$, then "
+    advice = (r"Normalise the normal first, $\hat N = N / \lVert N \rVert$, then "
             r"$R = 2 (\hat N \cdot L)\, \hat N - L$. Check: $R$ is a unit vector and "
             r"$\hat N \cdot R = \hat N \cdot L$.")
 

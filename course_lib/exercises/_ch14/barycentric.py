@@ -55,7 +55,7 @@ class BarycentricCoordinates(_Chapter14):
     answer_form = "vector"
     what = "the list of coordinates"
     may_coincide = ("wrong vertex order", "unsigned areas")
-    hint = (r"Each $\lambda$ is the signed area of the triangle in which $P$ replaces that "
+    advice = (r"Each $\lambda$ is the signed area of the triangle in which $P$ replaces that "
             r"vertex, over the signed area of $ABC$; the three add up to 1, and "
             r"$\lambda_A A + \lambda_B B + \lambda_C C = P$.")
 
@@ -126,7 +126,7 @@ class InterpolateColour(_Chapter14):
     answer_form = "vector"
     what = "the colour"
     may_coincide = ("wrong vertex order",)
-    hint = (r"Compute the barycentric coordinates of $P$ (signed areas over the whole area), "
+    advice = (r"Compute the barycentric coordinates of $P$ (signed areas over the whole area), "
             r"then $c = \lambda_A c_A + \lambda_B c_B + \lambda_C c_C$, channel by channel.")
 
     def draw(self, rng):
@@ -207,7 +207,7 @@ class PerspectiveCorrect(_Chapter14):
     title = "Perspective-correct texture coordinates"
     answer_form = "vector"
     what = "the texture coordinates"
-    hint = (r"Interpolate $q/w$ and $1/w$ linearly with the screen weights and divide: "
+    advice = (r"Interpolate $q/w$ and $1/w$ linearly with the screen weights and divide: "
             r"$q = \frac{\sum_k \lambda_k q_k / w_k}{\sum_k \lambda_k / w_k}$.")
 
     def draw(self, rng):

@@ -55,7 +55,7 @@ class SphericalMap(_Chapter14):
     answer_form = "vector"
     what = "the texture coordinates"
     may_coincide = ("atan instead of atan2",)
-    hint = (r"With $d = P - C$ and $r = \lVert d \rVert$: "
+    advice = (r"With $d = P - C$ and $r = \lVert d \rVert$: "
             r"$u = \tfrac12 + \operatorname{atan2}(d_x, d_z)/2\pi$, "
             r"$v = \tfrac12 + \arcsin(d_y/r)/\pi$ (angles in radians).")
 
@@ -141,7 +141,7 @@ class CylindricalMap(_Chapter14):
     answer_form = "vector"
     what = "the texture coordinates"
     may_coincide = ("atan instead of atan2",)
-    hint = (r"With $d = P - C$: $u = \tfrac12 + \operatorname{atan2}(d_x, d_z)/2\pi$ and "
+    advice = (r"With $d = P - C$: $u = \tfrac12 + \operatorname{atan2}(d_x, d_z)/2\pi$ and "
             r"$v = d_y / h$.")
 
     def draw(self, rng):
@@ -216,7 +216,7 @@ class PlanarMap(_Chapter14):
     title = "Planar mapping"
     answer_form = "vector"
     what = "the texture coordinates"
-    hint = (r"Subtract the origin, project onto $e_u$ and onto $e_v = n \times e_u$, divide by "
+    advice = (r"Subtract the origin, project onto $e_u$ and onto $e_v = n \times e_u$, divide by "
             r"the sizes.")
 
     def draw(self, rng):

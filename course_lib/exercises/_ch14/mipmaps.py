@@ -48,7 +48,7 @@ class MipLevel(_Parts):
 
     title = "Mipmap level and size"
     form_hint = "`[rho, lambda, width_k, height_k]`."
-    hint = (r"$\rho$ is the longer of the two screen steps measured in texels, "
+    advice = (r"$\rho$ is the longer of the two screen steps measured in texels, "
             r"$\lambda = \log_2 \rho$, and each level halves both sides.")
 
     def draw(self, rng):
@@ -155,7 +155,7 @@ class Checkerboard(_Chapter14):
     title = "A checkerboard texture"
     answer_form = "vector"
     what = "the list of values"
-    hint = (r"For each point: multiply each coordinate by $s$, round **down** "
+    advice = (r"For each point: multiply each coordinate by $s$, round **down** "
             r"($\lfloor -0.4 \rfloor = -1$), add, and take the remainder modulo 2.")
 
     def draw(self, rng):

@@ -45,7 +45,7 @@ class NearestSample(_Chapter14):
     title = "The nearest texel"
     answer_form = "number"
     what = "the sampled value"
-    hint = (r"Column $j = \lfloor u W \rfloor$, row $i = \lfloor v H \rfloor$, and row 0 is "
+    advice = (r"Column $j = \lfloor u W \rfloor$, row $i = \lfloor v H \rfloor$, and row 0 is "
             r"the bottom row of the picture.")
 
     def draw(self, rng):
@@ -112,7 +112,7 @@ class BilinearSample(_Chapter14):
     title = "A bilinear texture sample"
     answer_form = "number"
     what = "the sampled value"
-    hint = (r"With $x = uW - \tfrac12$, $y = vH - \tfrac12$: $j = \lfloor x \rfloor$, "
+    advice = (r"With $x = uW - \tfrac12$, $y = vH - \tfrac12$: $j = \lfloor x \rfloor$, "
             r"$i = \lfloor y \rfloor$, $\alpha = x - j$, $\beta = y - i$, then "
             r"$(1-\beta)[(1-\alpha)t_{i,j} + \alpha t_{i,j+1}] + "
             r"\beta[(1-\alpha)t_{i+1,j} + \alpha t_{i+1,j+1}]$.")
@@ -193,7 +193,7 @@ class WrapModes(_Parts):
 
     title = "Wrap modes: repeat, clamp, mirror"
     form_hint = "`[j_repeat, j_clamp, j_mirror]`, three whole numbers."
-    hint = (r"Compute $uW$ and round it **down**; then wrap that index into $0, \dots, W - 1$ "
+    advice = (r"Compute $uW$ and round it **down**; then wrap that index into $0, \dots, W - 1$ "
             r"the way each mode says.")
 
     def draw(self, rng):

@@ -11,7 +11,8 @@ import numpy as np
 
 from ... import format as fmt
 from .feedback import (ATOL, UNEXPLAINED, Feedback, _multiple, diagnose_matrix, diagnose_number,
-                       diagnose_parts, diagnose_vector, hinted, read_floats)
+                       diagnose_parts, diagnose_vector, hinted, read_floats, tolerance)
+from .guidance import Guidance, _record, recorded_check
 
 __all__ = [
     "DrawnExercise",
@@ -67,12 +68,83 @@ class Exercise:
 
     title = "Exercise"
 
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if "check" in cls.__dict__:           # every check is counted (and recorded) once
+            cls.check = recorded_check(cls.__dict__["check"])
+
     def __init__(self, seed=0):
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)):
             raise TypeError(f"seed must be an integer, got {type(seed).__name__}")
         self.seed = int(seed)
         salt = zlib.crc32(type(self).__name__.encode())
         self.setup(np.random.default_rng([self.seed, salt]))
+        #: How many answers were checked, and how many hints were shown, in this session.
+        self.attempts = 0
+        self.hints_shown = 0
+
+    # -- help on request -----------------------------------------------------------------------
+
+    def hints(self):
+        """The hints of this variant, from a nudge to nearly the answer (Markdown, 3 or more)."""
+        raise NotImplementedError(f"{type(self).__name__} has no hints yet")
+
+    def worked(self):
+        """The worked solution of this variant: a :class:`Worked` (steps and final answer)."""
+        raise NotImplementedError(f"{type(self).__name__} has no worked solution yet")
+
+    def hint(self):
+        """Show the next hint (one more each call); recorded in the progress file.
+
+        Returns
+        -------
+        Guidance
+            Markdown: ``Hint k of n`` and the hint, or a note when every hint was shown.
+        """
+        try:
+            hints = list(self.hints())
+        except NotImplementedError:
+            return Guidance("This exercise has no hints yet: reread the lesson's section.")
+        n, k = len(hints), self.hints_shown
+        if k >= n:
+            return Guidance(f"**No more hints:** all {n} were shown. `ex.solution()` works this "
+                            "variant out step by step.")
+        self.hints_shown = k + 1
+        _record(self, "hint", n=k + 1)
+        more = ("Call `hint()` again for the next one." if k + 1 < n else
+                "That was the last hint; `solution()` works this variant out.")
+        return Guidance(f"**Hint {k + 1} of {n}.** {hints[k]}\n\n*{more}*")
+
+    def solution(self, reveal=False):
+        """The worked solution of this variant, once an answer was checked (or with `reveal`).
+
+        Parameters
+        ----------
+        reveal : bool
+            Show it even before a first attempt.
+
+        Returns
+        -------
+        Worked or Guidance
+        """
+        if not self.attempts and not reveal:
+            return Guidance("**Try it first:** check an answer of your own (even a rough one), "
+                            "then call `solution()` again; `hint()` helps on the way. "
+                            "(`solution(reveal=True)` shows it now.)")
+        worked = self.worked()
+        _record(self, "solution", attempts=self.attempts)
+        return worked
+
+    def _attempted(self, feedback):
+        """Count a checked answer, record it, and offer help after a wrong one."""
+        if feedback.status == "unanswered":
+            return
+        self.attempts += 1
+        _record(self, "attempt", status=feedback.status, diagnosis=feedback.diagnosis,
+                credit=feedback.credit, hints=self.hints_shown)
+        if feedback.status in ("wrong", "invalid") and feedback.footer is None:
+            feedback.footer = ("Stuck? `hint()` gives a hint, `solution()` works this variant "
+                               "out step by step.")
 
     def setup(self, rng):
         """Draw the numbers of the question from `rng` and compute the expected answer."""
@@ -134,6 +206,30 @@ def gap(a, b, sign_free=False, projective=False):
     return distance
 
 
+def _tolerances_apart(a, b, sign_free=False, projective=False):
+    """How many tolerances of the policy (:func:`tolerance` of `b`) answer `a` is from `b`.
+
+    The largest entry's ratio; infinite for different shapes.
+    """
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    if a.shape != b.shape:
+        return math.inf
+    if not a.size:
+        return 0.0
+    if projective:
+        b = _multiple(a, b)
+    ratio = float((np.abs(a - b) / tolerance(b)).max())
+    if sign_free:
+        ratio = min(ratio, float((np.abs(a + b) / tolerance(b)).max()))
+    return ratio
+
+
+#: An anticipated mistake must lie at least this many tolerances of the policy from the right
+#: answer and from the other mistakes, so that a right answer to 3 significant digits is never
+#: taken for a mistake, nor a mistake for the right answer.
+TOLERANCES_APART = 2.0
+
+
 def well_separated(expected, mistakes, may_coincide=(), sign_free=False, projective=False):
     """True when every anticipated mistake can be told apart from the answer and the others.
 
@@ -168,20 +264,26 @@ def well_separated(expected, mistakes, may_coincide=(), sign_free=False, project
     """
     def apart(a, b):
         if projective:
-            return min(gap(a, b, projective=True), gap(b, a, projective=True))
-        return gap(a, b, sign_free)
+            distance = min(gap(a, b, projective=True), gap(b, a, projective=True))
+            ratio = min(_tolerances_apart(a, b, projective=True),
+                        _tolerances_apart(b, a, projective=True))
+        else:
+            distance = gap(a, b, sign_free)
+            ratio = min(_tolerances_apart(a, b, sign_free), _tolerances_apart(b, a, sign_free))
+        return distance >= APART - SAME and ratio >= TOLERANCES_APART
 
     live = []
     for mistake in mistakes:
         distance = gap(mistake.value, expected, sign_free, projective)
         if distance <= SAME and mistake.key in may_coincide:
             continue
-        if distance < APART - SAME:
+        if distance < APART - SAME or _tolerances_apart(
+                mistake.value, expected, sign_free, projective) < TOLERANCES_APART:
             return False
         live.append(mistake)
     for i, mistake in enumerate(live):
         for other in live[i + 1:]:
-            if other.key != mistake.key and apart(mistake.value, other.value) < APART - SAME:
+            if other.key != mistake.key and not apart(mistake.value, other.value):
                 return False
     return True
 
@@ -279,7 +381,7 @@ class DrawnExercise(Exercise):
     #: The answer is a transformation matrix (False: a table, a list of points...): chooses the
     #: wording of the generic diagnoses of :func:`diagnose_matrix`.
     transform = True
-    hint = ""
+    advice = ""
     vector_like = True
     reject_bool = False
 
@@ -342,7 +444,7 @@ class DrawnExercise(Exercise):
 
     def _check(self, answer):
         """The verdict of ``_judge``, with the ``hint`` when no anticipated mistake explains it."""
-        return hinted(self._judge(answer), self.hint, UNEXPLAINED)
+        return hinted(self._judge(answer), self.advice, UNEXPLAINED)
 
     def _judge(self, answer):
         """The verdict on `answer` by its form (see ``answer_form``)."""
@@ -410,18 +512,23 @@ def parts_separated(parts, same=SAME, apart=APART):
     >>> parts_separated(right_too), parts_separated(right_too, same=None)
     (True, False)
     """
+    def far(x, y):                               # exactly `apart`, up to rounding, is apart
+        d = abs(float(x) - float(y))
+        return d >= apart - SAME and d >= TOLERANCES_APART * float(
+            min(tolerance(x), tolerance(y)))
+
     for _, expected, mistakes in parts:
         live = []
         for m in mistakes:
             d = abs(float(m.value) - float(expected))
             if same is not None and d <= same:
                 continue
-            if d < apart - SAME:                  # exactly `apart`, up to rounding, is apart
+            if not far(m.value, expected):
                 return False
             live.append(m)
         for i, a in enumerate(live):
             for b in live[i + 1:]:
-                if a.key != b.key and abs(float(a.value) - float(b.value)) < apart - SAME:
+                if a.key != b.key and not far(a.value, b.value):
                     return False
     return True
 
@@ -434,7 +541,7 @@ class PartsAnswer:
     are computed when a variant is drawn (the variant is kept only if
     :func:`parts_separated`), and ``judge_parts(answer)`` gives the feedback: the mixin's
     ``_check``. ``what`` names the whole answer and ``form_hint`` says what to type;
-    ``self.hint`` (how to get the numbers right) ends the feedback on unexplained numbers, once
+    ``self.advice`` (how to get the numbers right) ends the feedback on unexplained numbers, once
     (:func:`diagnose_parts` adds it, so this ``_check`` does not hint the verdict again).
 
     Examples
@@ -472,6 +579,6 @@ class PartsAnswer:
 
     def judge_parts(self, answer):
         """The feedback on `answer` by :func:`diagnose_parts`."""
-        return diagnose_parts(answer, self._parts, self.what, self.form_hint, self.hint)
+        return diagnose_parts(answer, self._parts, self.what, self.form_hint, self.advice)
 
     _check = judge_parts

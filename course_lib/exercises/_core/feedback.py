@@ -10,7 +10,11 @@ import numpy as np
 from ... import format as fmt
 
 __all__ = [
+    "SIGNIFICANT",
     "Feedback",
+    "agrees",
+    "rounding_of",
+    "tolerance",
     "Mistake",
     "close",
     "diagnose_matrix",
@@ -25,8 +29,131 @@ __all__ = [
 ]
 
 
-#: Default absolute tolerance: answers computed by hand to 3 decimals pass.
+#: The course's tolerance policy, written once (:func:`tolerance`, :func:`agrees`): a real number
+#: is right when it agrees with the exact value to SIGNIFICANT significant digits (half a unit
+#: of the last digit, plus 0.1 % for rounding on the way), or to 3 decimals for numbers below 1
+#: (ATOL). Whole numbers (counts, indices, outcodes) are compared exactly.
+SIGNIFICANT = 3
+#: The smallest tolerance: answers computed by hand to 3 decimals pass.
 ATOL = 2e-3
+#: The share of the exact value an answer rounded to too few digits may be off and still be
+#: called "close" rather than wrong.
+CLOSE_SHARE = 0.05
+
+
+def _unit(x):
+    """One unit of the SIGNIFICANT-th significant digit of `x` (0 for 0); the same on every CPU.
+
+    Python formats floats exactly, so the decade is decided without a logarithm.
+    """
+    if x == 0 or not math.isfinite(x):
+        return 0.0
+    exponent = int(f"{abs(x):.{SIGNIFICANT - 1}e}".split("e")[1])
+    return 10.0 ** (exponent - SIGNIFICANT + 1)
+
+
+def tolerance(expected, floor=ATOL):
+    """How far an answer may be from each entry of `expected` and still be right.
+
+    Half a unit of the third significant digit, plus 0.1 % of the value for rounding on the
+    way, and at least `floor` (3 decimals for small numbers).
+
+    Parameters
+    ----------
+    expected : float or array_like
+    floor : float
+
+    Returns
+    -------
+    numpy.ndarray
+        One tolerance per entry, of the shape of `expected`.
+
+    Examples
+    --------
+    >>> [round(float(t), 4) for t in tolerance([368.896, 12.345, 0.4567, 0.0])]
+    [0.8689, 0.0623, 0.002, 0.002]
+    """
+    e = np.abs(np.asarray(expected, dtype=float))
+    units = np.array([_unit(float(x)) for x in e.ravel()]).reshape(e.shape)
+    return np.maximum(floor, 0.5 * units + 1e-3 * e)
+
+
+def agrees(value, expected, whole=False, floor=ATOL):
+    """Whether `value` is right for `expected` by the course's policy (see :data:`SIGNIFICANT`).
+
+    Parameters
+    ----------
+    value, expected : float or array_like
+    whole : bool
+        Whole numbers: exactly equal (``5.0`` is the whole number 5).
+    floor : float
+        The smallest tolerance (see :func:`tolerance`).
+
+    Examples
+    --------
+    >>> agrees(369, 368.896), agrees(368, 368.896), agrees([12.3, 0.457], [12.345, 0.4567])
+    (True, False, True)
+    >>> agrees(5.0, 5, whole=True), agrees(4, 5, whole=True), agrees([1, 2], [1, 2, 3])
+    (True, False, False)
+    """
+    a, b = np.asarray(value, dtype=float), np.asarray(expected, dtype=float)
+    if a.shape != b.shape:
+        return False
+    if whole:
+        return bool(np.array_equal(a, b))
+    return bool(np.all(np.abs(a - b) <= tolerance(b, floor)))
+
+
+def _roundings(x):
+    """The values `x` takes when rounded, floored or cut to 2 significant digits or more (to
+    hundreds down to 6 decimals)."""
+    found = set()
+    for d in range(-2, 7):
+        scale = 10.0 ** d
+        if 10 * abs(x) * scale < 10 - 1e-9:          # fewer than 2 significant digits kept
+            continue
+        for f in (round, math.floor, math.ceil, math.trunc):
+            found.add(float(f(x * scale)) / scale)
+    return found
+
+
+def rounding_of(value, expected, mistakes=()):
+    """Whether `value` is `expected` rounded (or cut) to too few digits, entry by entry.
+
+    Each entry must keep 2 significant digits at least (1.0 is no rounding of 1.047 worth
+    calling close). An entry given exactly counts as rounded; at least one must differ, every one must be
+    within :data:`CLOSE_SHARE` of the largest entry of `expected`, and an anticipated mistake
+    that `value` matches exactly is not taken for a rounding.
+
+    Examples
+    --------
+    >>> rounding_of(368, 368.896), rounding_of([0.71, 0.71, 0], [0.7071, 0.7071, 0])
+    (True, True)
+    >>> rounding_of(0, 0.3), rounding_of(2.5, 2.5)
+    (False, False)
+    """
+    a, b = np.asarray(value, dtype=float), np.asarray(expected, dtype=float)
+    if a.shape != b.shape or not a.size or np.array_equal(a, b):
+        return False
+    scale = float(np.abs(b).max())
+    if scale == 0 or float(np.abs(a - b).max()) > CLOSE_SHARE * scale:
+        return False
+    for x, y in zip(a.ravel(), b.ravel()):
+        if x != y and not any(math.isclose(x, r, rel_tol=1e-9, abs_tol=1e-12)
+                              for r in _roundings(float(y))):
+            return False
+    for mistake in mistakes:
+        wrong = np.asarray(mistake.value, dtype=float) if not isinstance(mistake.value, float) \
+            else np.asarray(mistake.value)
+        if wrong.shape == a.shape and np.allclose(a, wrong, rtol=1e-9, atol=1e-12):
+            return False
+    return True
+
+
+def _rounded_feedback(what):
+    return Feedback("wrong", f"Close: {what} looks like the right value rounded to too few "
+                    f"digits. Give at least {SIGNIFICANT} significant digits (or 3 decimals), and "
+                    "keep the full precision in the intermediate steps.", "rounded")
 
 
 #: What an unanswered exercise says.
@@ -60,12 +187,17 @@ class Feedback:
     _ICONS = {"correct": "\u2705", "wrong": "\u274c", "unanswered": "\u270f\ufe0f",
               "invalid": "\u26a0\ufe0f"}
 
-    def __init__(self, status, message, diagnosis=None):
+    def __init__(self, status, message, diagnosis=None, credit=None):
         if status not in self._HEADINGS:
             raise ValueError(f"status must be one of {sorted(self._HEADINGS)}, got {status!r}")
         self.status = status
         self.message = message
         self.diagnosis = diagnosis or status
+        #: The share of the marks this answer earns, 0 to 1: 1 when correct, the share of the
+        #: parts that are right for an answer of several parts, else 0.
+        self.credit = float(status == "correct") if credit is None else float(credit)
+        #: A line shown under the verdict in a notebook (where to get help); not in `message`.
+        self.footer = None
 
     def __bool__(self):
         return self.status == "correct"
@@ -77,7 +209,10 @@ class Feedback:
         return str(self)
 
     def _repr_markdown_(self):
-        return f"{self._ICONS[self.status]} **{self._HEADINGS[self.status]}.** {self.message}"
+        text = f"{self._ICONS[self.status]} **{self._HEADINGS[self.status]}.** {self.message}"
+        if 0 < self.credit < 1:
+            text += f" *(Partial credit: {100 * self.credit:.0f}%.)*"
+        return text + (f"\n\n*{self.footer}*" if self.footer else "")
 
 
 class Mistake:
@@ -129,6 +264,9 @@ def _read(answer, what):
     if isinstance(answer, (str, bytes)):
         return Feedback("invalid", f"Your answer is text ({answer!r}); give {what} as numbers.",
                         "not a number")
+    if _has_bool(answer):
+        return Feedback("invalid", f"Your answer holds True or False; give {what} as numbers "
+                        "(True is not the number 1 here).", "not a number")
     try:
         value = np.asarray(answer, dtype=float)
     except (TypeError, ValueError):
@@ -140,14 +278,32 @@ def _read(answer, what):
     return value
 
 
+def _has_bool(answer, depth=0):
+    """Whether `answer` is, or holds, a bool (``True`` would be read as the number 1)."""
+    if isinstance(answer, (bool, np.bool_)):
+        return True
+    if isinstance(answer, np.ndarray):
+        return answer.dtype == bool
+    if isinstance(answer, (list, tuple)) and depth < 4:
+        return any(_has_bool(item, depth + 1) for item in answer)
+    return False
+
+
+def as_vector(value, n):
+    """A column ``(n, 1)`` or row ``(1, n)`` array read as the vector of `n` entries it is."""
+    if value.shape in ((n, 1), (1, n)):
+        return value.reshape(n)
+    return value
+
+
 def _cap(text):
     """`text` with its first letter upper-cased (str.capitalize would lower-case the rest)."""
     return text[:1].upper() + text[1:]
 
 
 def _close(a, b, atol):
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    return a.shape == b.shape and bool(np.allclose(a, b, rtol=1e-3, atol=atol))
+    """The course's tolerance policy (:func:`agrees`), with `atol` as the smallest tolerance."""
+    return agrees(a, b, floor=atol)
 
 
 def _multiple(value, of):
@@ -253,6 +409,8 @@ def diagnose_matrix(answer, expected, mistakes=(), atol=ATOL, what="the matrix",
             return Feedback("correct", f"{_cap(what)} is right: it is {fmt.number(ratio)} "
                             "times the reference matrix, and any non-zero multiple of a "
                             "projective matrix is the same transformation.")
+    if rounding_of(value, expected, mistakes):
+        return _rounded_feedback(what)
     found = _anticipated(value, mistakes, atol, expected, projective=homogeneous_scale)
     if found is not None:
         return found
@@ -291,9 +449,14 @@ def _common_ratio(value, expected):
     return ratio if np.allclose(value, ratio * expected, rtol=1e-3, atol=1e-6) else None
 
 
+def _off(value, expected, atol=ATOL):
+    """Which entries of `value` are off `expected` by the tolerance policy (a bool array)."""
+    return np.abs(value - expected) > tolerance(expected, atol)
+
+
 def _entrywise(value, expected, atol, what, transform=True):
-    off = ~np.isclose(value, expected, rtol=1e-3, atol=atol)
-    sign_only = off & np.isclose(value, -expected, rtol=1e-3, atol=atol)
+    off = _off(value, expected, atol)
+    sign_only = off & ~_off(value, -expected, atol)
     cells = [tuple(int(i) for i in idx) for idx in np.argwhere(off)]
     listed = ", ".join(str(c) for c in cells[:6]) + (" ..." if len(cells) > 6 else "")
     if off.sum() == sign_only.sum():
@@ -309,7 +472,7 @@ def _entrywise(value, expected, atol, what, transform=True):
 
 
 def diagnose_vector(answer, expected, mistakes=(), atol=ATOL, what="the vector",
-                    unit=False, sign_free=False):
+                    unit=False, sign_free=False, whole=None):
     r"""Compare a vector (a point, a direction, a quaternion) with the expected one.
 
     Checks, in order: readable and the right length; correct (or its negative when
@@ -329,6 +492,9 @@ def diagnose_vector(answer, expected, mistakes=(), atol=ATOL, what="the vector",
     sign_free : bool
         ``-expected`` is also right (a quaternion and its negative are the same rotation); the
         negatives of the anticipated mistakes are recognised too.
+    whole : bool or None
+        Whole numbers (indices, counts), compared exactly; None: when `expected` is of an
+        integer type.
 
     Returns
     -------
@@ -341,18 +507,25 @@ def diagnose_vector(answer, expected, mistakes=(), atol=ATOL, what="the vector",
     >>> bool(diagnose_vector([0, 0, -1], [0, 0, 1], sign_free=True))
     True
     """
+    whole = _is_whole(expected) if whole is None else whole
     expected = np.asarray(expected, dtype=float)
     value = _read(answer, what)
     if isinstance(value, Feedback):
         return value
+    value = as_vector(value, expected.size) if expected.ndim == 1 else value
     if value.shape != expected.shape:
         return Feedback("invalid", f"{_cap(what)} should have {expected.size} "
                         f"components, yours has shape {value.shape}.", "wrong shape")
+    if whole:
+        return _whole_vector(value, expected, mistakes, what)
     if _close(value, expected, atol):
         return Feedback("correct", f"{_cap(what)} is right.")
     if sign_free and _close(value, -expected, atol):
         return Feedback("correct", f"{_cap(what)} is right (it is the negative of the "
                         "reference answer, which represents the same thing).")
+    if rounding_of(value, expected, mistakes) or (
+            sign_free and rounding_of(value, -expected, mistakes)):
+        return _rounded_feedback(what)
     found = _anticipated(value, mistakes, atol, expected, sign_free)
     if found is not None:
         return found
@@ -372,13 +545,59 @@ def diagnose_vector(answer, expected, mistakes=(), atol=ATOL, what="the vector",
     if _close(value, -expected, atol):
         return Feedback("wrong", f"{_cap(what)} points the opposite way: every "
                         "component has the wrong sign.", "opposite sign")
-    off = [int(i) for i in np.flatnonzero(~np.isclose(value, expected, rtol=1e-3, atol=atol))]
+    off = [int(i) for i in np.flatnonzero(_off(value, expected, atol))]
+    return Feedback("wrong", f"Components {off} (counted from 0) of {what} are off.",
+                    "components differ")
+
+
+def _is_whole(expected):
+    """Whether `expected` is given as whole numbers (Python or numpy integers, not bools)."""
+    if isinstance(expected, (bool, np.bool_)):
+        return False
+    if isinstance(expected, (int, np.integer)):
+        return True
+    if isinstance(expected, np.ndarray):
+        return expected.dtype.kind in "iu"
+    if isinstance(expected, (list, tuple)) and expected:
+        return all(_is_whole(item) for item in expected)
+    return False
+
+
+def _not_whole(value, what):
+    """A Feedback for an answer that is no whole number where one is expected, else None."""
+    flat = np.ravel(value)
+    fractional = flat[flat != np.round(flat)]
+    if not fractional.size:
+        return None
+    return Feedback("wrong", f"{_cap(what)} is made of whole numbers (counts, indices or "
+                    f"codes), and yours has a fractional part ({fmt.number(float(fractional[0]), 4)}): "
+                    "count or index again; nothing here is averaged or interpolated.", "not whole")
+
+
+def _whole_vector(value, expected, mistakes, what):
+    """Whole numbers compared exactly, with the anticipated mistakes and an off-by-one check."""
+    if np.array_equal(value, expected):
+        return Feedback("correct", f"{_cap(what)} is right.")
+    for mistake in mistakes:
+        wrong = np.asarray(mistake.value, dtype=float)
+        if wrong.shape == value.shape and np.array_equal(value, wrong) \
+                and not np.array_equal(wrong, expected):
+            return Feedback("wrong", mistake.explanation, mistake.key)
+    bad = _not_whole(value, what)
+    if bad is not None:
+        return bad
+    diff = value - expected
+    off = [int(i) for i in np.flatnonzero(diff)]
+    if np.all(np.abs(diff[diff != 0]) == 1):
+        return Feedback("wrong", f"Off by one in components {off} (counted from 0) of {what}: "
+                        "count again, and check whether the first and last ones are included "
+                        "(and whether counting starts at 0 or 1).", "off by one")
     return Feedback("wrong", f"Components {off} (counted from 0) of {what} are off.",
                     "components differ")
 
 
 def diagnose_number(answer, expected, mistakes=(), atol=ATOL, what="the number",
-                    angle=False):
+                    angle=False, whole=None):
     r"""Compare a single number with the expected one.
 
     With ``angle=True`` the answer is an angle in radians: an answer in degrees, or differing
@@ -392,6 +611,9 @@ def diagnose_number(answer, expected, mistakes=(), atol=ATOL, what="the number",
     atol : float
     what : str
     angle : bool
+    whole : bool or None
+        A whole number (a count, an index), compared exactly, with an off-by-one diagnosis;
+        ``5.0`` is the whole number 5. None: when `expected` is an integer.
 
     Returns
     -------
@@ -402,22 +624,32 @@ def diagnose_number(answer, expected, mistakes=(), atol=ATOL, what="the number",
     >>> import math
     >>> diagnose_number(90, math.pi / 2, angle=True).diagnosis
     'degrees'
+    >>> diagnose_number(6, 7).diagnosis, diagnose_number(7.0, 7).status
+    ('off by one', 'correct')
+    >>> diagnose_number(368, 368.896).diagnosis
+    'rounded'
     """
+    whole = _is_whole(expected) if whole is None else whole
     value = _read(answer, what)
     if isinstance(value, Feedback):
         return value
     if value.size != 1:
         return Feedback("invalid", f"{_cap(what)} should be a single number, yours has "
                         f"shape {value.shape}.", "wrong shape")
+    if whole:
+        return _whole_vector(value.reshape(1), np.asarray([float(expected)]), [
+            Mistake(np.reshape(m.value, 1), m.explanation, m.key) for m in mistakes], what)
     value = float(value.ravel()[0])
     expected = float(expected)
-    if math.isclose(value, expected, rel_tol=1e-3, abs_tol=atol):
+    if agrees(value, expected, floor=atol):
         return Feedback("correct", f"{_cap(what)} is right.")
+    if rounding_of(value, expected, mistakes):
+        return _rounded_feedback(what)
     found = _anticipated(np.asarray(value), mistakes, atol, np.asarray(expected))
     if found is not None:
         return found
     if angle:
-        if math.isclose(math.radians(value), expected, rel_tol=1e-3, abs_tol=atol):
+        if agrees(math.radians(value), expected, floor=atol):
             return Feedback("wrong", f"That is {what} in degrees; give it in radians "
                             f"({fmt.number(value)}° = {fmt.number(math.radians(value))} rad).",
                             "degrees")
@@ -425,7 +657,7 @@ def diagnose_number(answer, expected, mistakes=(), atol=ATOL, what="the number",
         if abs(turns - round(turns)) < 1e-3 and round(turns) != 0:
             return Feedback("correct", f"{_cap(what)} is right up to a whole number of "
                             "turns, which is the same rotation.")
-    if math.isclose(value, -expected, rel_tol=1e-3, abs_tol=atol):
+    if agrees(value, -expected, floor=atol):
         return Feedback("wrong", "Right size, wrong sign.", "opposite sign")
     return Feedback("wrong", f"{_cap(what)} should be different: yours is "
                     f"{fmt.number(value, 4)}.", "value differs")
@@ -497,32 +729,51 @@ def diagnose_parts(answer, parts, what, form_hint, hint=""):
     if is_unanswered(answer) or (isinstance(answer, (list, tuple))
                                  and any(is_unanswered(a) for a in answer)):
         return Feedback("unanswered", UNANSWERED)
+    if _has_bool(answer):
+        return Feedback("invalid", f"{_cap(what)} holds True or False; give numbers: "
+                        f"{form_hint}", "not a number")
     values = read_floats(answer)
+    if values is not None:
+        values = as_vector(values, len(parts))
     if values is None or values.shape != (len(parts),):
         return Feedback("invalid", f"{_cap(what)} should be {len(parts)} numbers: {form_hint}",
                         "unreadable")
-    wrong, found = [], None
+    wrong, found, rounded = [], None, []
     for value, (name, expected, mistakes) in zip(values, parts):
-        if math.isclose(value, expected, rel_tol=1e-3, abs_tol=ATOL):
+        whole = _is_whole(expected)
+        if agrees(value, expected, whole=whole):
             continue
         wrong.append(name)
+        if not whole and rounding_of(value, expected, mistakes):
+            rounded.append(name)
+            continue
         if found is None:
             for mistake in mistakes:
-                if _close(value, mistake.value, ATOL) and not _close(mistake.value, expected,
-                                                                     ATOL):
+                if agrees(value, mistake.value, whole=whole) \
+                        and not agrees(mistake.value, expected, whole=whole):
                     found = (name, mistake)
                     break
+            else:
+                if whole and value == round(value) and abs(value - float(expected)) == 1:
+                    found = (name, Mistake(value, "Off by one: count again, and check whether "
+                                           "the first and last ones are included.",
+                                           "off by one"))
     if not wrong:
         return Feedback("correct", f"All {len(parts)} numbers are right.")
     right = [name for name, _, _ in parts if name not in wrong]
+    credit = len(right) / len(parts)
     summary = (f" Right: {', '.join(right)}." if right else "") + \
         f" Not yet: {', '.join(wrong)}."
     if found is not None:
         name, mistake = found
         return Feedback("wrong", f"*{_cap(name)}:* {mistake.explanation}" + summary,
-                        mistake.key)
+                        mistake.key, credit=credit)
+    if rounded:
+        return Feedback("wrong", f"Close: {', '.join(rounded)} look{'s' if len(rounded) == 1 else ''} "
+                        f"rounded to too few digits; give at least {SIGNIFICANT} significant "
+                        f"digits.{summary}", "rounded", credit=credit)
     return Feedback("wrong", f"Some of your numbers are off.{summary} {hint}".rstrip(),
-                    "value differs")
+                    "value differs", credit=credit)
 
 
 def hinted(feedback, hint, generic):
@@ -553,14 +804,16 @@ def hinted(feedback, hint, generic):
     return feedback
 
 
-def close(a, b, atol=ATOL, rtol=1e-3):
-    """Whether two answers have the same shape and agree within the tolerances.
+def close(a, b, atol=ATOL):
+    """Whether answer `a` has the shape of `b` and agrees with it by the tolerance policy.
+
+    The same as :func:`agrees` (the course's one policy), for reals.
 
     Parameters
     ----------
     a, b : array_like
-    atol, rtol : float
-        Absolute and relative tolerance, as for :func:`numpy.allclose`.
+    atol : float
+        The smallest tolerance (see :func:`tolerance`).
 
     Returns
     -------
@@ -571,8 +824,7 @@ def close(a, b, atol=ATOL, rtol=1e-3):
     >>> close([1, 2], [1, 2.001]), close([1, 2], [1, 2.1]), close([1, 2], [1, 2, 3])
     (True, False, False)
     """
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    return a.shape == b.shape and bool(np.allclose(a, b, rtol=rtol, atol=atol))
+    return agrees(a, b, floor=atol)
 
 
 def has_placeholder(answer, none_inside=False):
