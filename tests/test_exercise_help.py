@@ -1,0 +1,91 @@
+"""Every exercise helps on request: at least 3 hints, and a worked solution of the student's own
+variant whose final answer the checker accepts (200 seeds each).
+
+The worked solution computes its answer by the arithmetic its steps show, from the question's
+numbers; the checker computes its expected answer with course_lib. The two agreeing over 200
+seeds is the test (an answer copied from ``self.expected`` is refused: it would test nothing).
+"""
+import re
+
+import numpy as np
+import pytest
+
+from course_lib.exercises import mock
+from course_lib.exercises.core import Guidance, Worked
+
+CLASSES = [cls for classes in mock._numeric_pool().values() for cls in classes]
+SEEDS = range(200)
+#: Among the first 20 seeds, at least this many worked solutions must read differently: they
+#: show each variant's own numbers, not generic prose.
+DISTINCT_WORKED = 10
+
+
+def _ids(cls):
+    return f"{cls.__module__.rsplit('.', 1)[-1].lstrip('_')}.{cls.__name__}"
+
+
+def _shares_memory(a, b):
+    try:
+        return np.shares_memory(np.asarray(a), np.asarray(b))
+    except TypeError:
+        return False
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=_ids)
+def test_worked_solution_reaches_the_checkers_answer(cls):
+    texts = set()
+    for seed in SEEDS:
+        ex = cls(seed=seed)
+        worked = ex.worked()
+        assert isinstance(worked, Worked), (cls, seed)
+        assert len(worked.steps) >= 2, (cls, seed, "a worked solution has steps")
+        expected = getattr(ex, "expected", None)
+        if expected is not None and not isinstance(expected, (bool, int, float, str)):
+            assert worked.answer is not expected and not _shares_memory(worked.answer, expected),\
+                (cls, seed, "the worked answer must be computed by its steps, not copied")
+        fb = ex.check(worked.answer)
+        assert fb.status == "correct", (cls, seed, worked.answer, fb)
+        if seed < 20:
+            texts.add("\n".join(worked.steps))
+        markdown = worked.markdown()
+        assert "**Answer:**" in markdown and not re.search(r"\bnan\b", markdown.lower())
+    assert len(texts) >= DISTINCT_WORKED, (cls, len(texts))
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=_ids)
+def test_at_least_three_hints_from_a_nudge_to_nearly_the_answer(cls):
+    for seed in range(20):
+        ex = cls(seed=seed)
+        hints = list(ex.hints())
+        assert len(hints) >= 3, (cls, seed)
+        assert all(isinstance(h, str) and len(h.strip()) > 20 for h in hints), (cls, hints)
+        assert len(set(hints)) == len(hints), (cls, "hints repeat")
+        shown = [ex.hint() for _ in range(len(hints) + 1)]
+        assert all(isinstance(g, Guidance) for g in shown)
+        for k, (guidance, text) in enumerate(zip(shown, hints), 1):
+            assert f"Hint {k} of {len(hints)}" in guidance.markdown and text in guidance.markdown
+        assert "No more hints" in shown[-1].markdown
+        assert ex.hints_shown == len(hints)
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=_ids)
+def test_the_solution_is_offered_after_an_attempt(cls):
+    ex = cls(seed=7)
+    first = ex.solution()
+    assert isinstance(first, Guidance) and "Try it first" in first.markdown
+    assert isinstance(ex.solution(reveal=True), Worked)
+    fb = ex.check(...)
+    assert fb.status == "unanswered" and ex.attempts == 0       # no attempt yet
+    ex.check("not an answer")
+    assert ex.attempts == 1 and isinstance(ex.solution(), Worked)
+
+
+def test_a_wrong_answer_points_to_the_help():
+    from course_lib.exercises import ch03
+    ex = ch03.QuaternionFromAxisAngle(seed=1)
+    fb = ex.check([9, 9, 9, 9])
+    assert fb.status == "wrong"
+    assert "hint()" in fb._repr_markdown_() and "solution()" in fb._repr_markdown_()
+    assert "hint()" not in fb.message                      # the message itself stays the verdict
+    right = ex.check(ex.worked().answer)
+    assert right and right.footer is None
