@@ -243,7 +243,7 @@ _HEADER_LINE = json.dumps(_HEADER, sort_keys=True) + "\n"
 #: What each kind of record holds besides its ``kind`` and ``date`` (type per key).
 _EVENT_KEYS = {"key": str, "seed": int}
 _STATUSES = ("correct", "wrong", "invalid")
-#: The notices of the last read of each file: what was set aside and why (for the report).
+#: What happened to each file in this session: what was set aside and why (for the report).
 _NOTICES = {}
 
 
@@ -535,7 +535,7 @@ def read_events(path=None):
     """
     file = progress_path(path)
     records, notices = _load(file)
-    _NOTICES[file] = notices
+    _remember(file, notices)
     _warn(notices)
     return records
 
@@ -568,9 +568,15 @@ def read_history(path=None):
     """
     file = progress_path(path)
     records, notices = _load(file)
-    _NOTICES[file] = notices
+    _remember(file, notices)
     _warn(notices)
     return [r for r in records if r.get("kind", "exam") == "exam"]
+
+
+def _remember(file, notices):
+    """Keep what happened to `file` in this session, for :func:`progress_report`."""
+    kept = _NOTICES.setdefault(file, [])
+    kept.extend(n for n in notices if n not in kept)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -748,7 +754,8 @@ def record_exam(result, path=None, when=None):
     reason = _exam_problem(record)
     if reason is not None:
         raise ValueError(f"result is not an exam record: {reason}")
-    _, notices = _save(record, path, durable=True)
+    file, notices = _save(record, path, durable=True)
+    _remember(progress_path(path), notices)
     _warn(notices, stacklevel=2)
     return record
 
@@ -798,6 +805,7 @@ def record_event(kind, key, seed, path=None, when=None, **fields):
     if reason is not None:
         raise ValueError(f"not a valid {kind} record: {reason}")
     _, notices = _save(record, path, durable=False)
+    _remember(progress_path(path), notices)
     _warn(notices, stacklevel=2)
     return record
 

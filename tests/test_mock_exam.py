@@ -453,3 +453,105 @@ def test_widget_reports_a_corrupt_progress_file(tmp_path):
     assert "could not be read" in widget.status.value and ".corrupt-" in widget.status.value
     assert len(progress.read_history(file)) == 1
     assert [p.read_text() for p in tmp_path.glob("progress.json.corrupt-*")] == ["{ not json"]
+
+
+# --- adaptive exams: weak chapters weigh more, what was wrong comes back --------------------
+
+def attempt(key, seed, right):
+    return {"kind": "attempt", "key": key, "seed": seed, "status": "correct" if right else
+            "wrong", "hints": 0, "date": "2026-01-01T00:00:00+00:00"}
+
+
+def exam_record(questions):
+    """An exam record made of (key, seed, credit) triples."""
+    return {"kind": "exam", "date": "2026-01-02T00:00:00+00:00",
+            "questions": [{"chapter": int(k[2:4]), "key": k, "seed": s, "credit": c}
+                          for k, s, c in questions]}
+
+
+def test_without_a_history_the_exam_is_the_balanced_one():
+    for seed in range(5):
+        plain = mock_exam(seed, chapters=[3, 5, 7], n_questions=9)
+        for history in (None, []):
+            same = mock_exam(seed, chapters=[3, 5, 7], n_questions=9, history=history)
+            assert [(q.key, q.seed) for q in same] == [(q.key, q.seed) for q in plain]
+            assert same.plan is None
+
+
+def test_an_adaptive_exam_is_deterministic_per_seed_and_history():
+    history = [attempt("ch05.Outcodes", 1, False), attempt("ch03.ShearImage", 2, True)]
+    draws = [[(q.key, q.seed) for q in mock_exam(s, [3, 5, 7], 9, history=list(history))]
+             for s in (4, 4, 5)]
+    assert draws[0] == draws[1] and draws[0] != draws[2]
+    other = [attempt("ch07.BSplinePoint", 1, False)]
+    assert [(q.key, q.seed) for q in mock_exam(4, [3, 5, 7], 9, history=other)] != draws[0]
+
+
+def test_weak_chapters_get_more_questions_and_every_chapter_keeps_one():
+    # chapter 5 all wrong (weight 3), chapter 3 all right (weight 1), chapter 7 unknown (1.5)
+    history = [attempt("ch05.Outcodes", k, False) for k in range(4)] + \
+              [attempt("ch03.ShearImage", k, True) for k in range(4)]
+    for seed in range(20):
+        counts = collections.Counter(q.chapter for q in mock_exam(seed, [3, 5, 7], 11,
+                                                                  history=history))
+        # by hand: one each, then 8 shared 3 : 1 : 1.5 -> 4.36, 1.45, 2.18, floored 4, 1, 2;
+        # the one left goes to the largest remainder, chapter 3's 0.45
+        assert counts == {5: 1 + 4, 3: 1 + 1 + 1, 7: 1 + 2}
+    few = [collections.Counter(q.chapter for q in mock_exam(s, [3, 5, 7], 2, history=history))
+           for s in range(10)]
+    assert all(c == {5: 1, 7: 1} for c in few)       # fewer questions than chapters: heaviest
+
+
+def test_a_wrong_answer_comes_back_in_a_new_variant_then_spaced_out():
+    key = "ch07.BSplinePoint"
+
+    def due(history):
+        return [d["key"] for d in mock.study_plan(history)["due"]]
+
+    history = [attempt(key, 3, False)]
+    assert due(history) == [key]                               # due in the next exam
+    for seed in range(10):
+        exam = mock_exam(seed, chapters=[7], n_questions=4, history=history)
+        asked = [q for q in exam if q.key == key]
+        assert len(asked) == 1 and asked[0].seed != 3          # a variant not seen
+        assert exam.questions.index(asked[0]) == 0             # reviews come first
+    history.append(exam_record([(key, 11, 1.0)]))               # right in exam 1: box 1
+    assert due(history) == []                                   # not in exam 2 ...
+    history.append(exam_record([("ch07.BernsteinValues", 5, 1.0)]))
+    assert due(history) == [key]                                # ... but in exam 3 (2 later)
+    history.append(exam_record([(key, 12, 1.0)]))               # right again in exam 3: box 2
+    for _ in range(3):
+        assert due(history) == []                               # exams 4, 5, 6
+        history.append(exam_record([("ch07.BernsteinValues", 5, 1.0)]))
+    assert due(history) == [key]                                # exam 7 (4 later)
+    history.append(exam_record([(key, 13, 1.0)]))               # third right: out
+    assert all(due(history + [exam_record([])] * k) == [] for k in range(12))
+    history.append(exam_record([(key, 14, 0.5)]))               # partly wrong: back at once
+    assert due(history) == [key]
+
+
+def test_old_exam_records_without_their_questions_still_count():
+    old = {"kind": "exam", "seed": 1, "chapters": [5], "n_questions": 2,
+           "score": {"5": [1, 2]}, "revisit": [{"chapter": 5, "key": "ch05.Outcodes",
+                                                "seed": 9, "label": "x"}]}
+    plan = mock.study_plan([old])
+    assert [d["key"] for d in plan["due"]] == ["ch05.Outcodes"] and plan["weights"] == {5: 3.0}
+
+
+def test_partial_credit_counts_in_the_exam_score():
+    from course_lib.exercises.core import PartsAnswer
+    chapter, cls = next((ch, c) for ch, classes in mock._numeric_pool().items()
+                        for c in classes if issubclass(c, PartsAnswer))
+    ex = cls(seed=0)
+    parts = ex._parts
+    answer = [float(p[1]) for p in parts]
+    answer[0] = float(parts[0][1]) + 1000.0                     # one part wrong, far off
+    exam = mock.Exam(0, [chapter], [ExamQuestion(chapter, ex)])
+    fb = exam.submit(0, repr(answer))
+    share = (len(parts) - 1) / len(parts)
+    assert fb.status == "wrong" and fb.credit == pytest.approx(share)
+    right, total = exam.total()
+    assert right == pytest.approx(share, abs=1e-4) and total == 1
+    record = exam.record()
+    assert record["questions"][0]["credit"] == pytest.approx(share, abs=1e-4)
+    assert progress._exam_problem({**record, "date": "d"}) is None

@@ -24,9 +24,10 @@ import zlib
 
 import numpy as np
 
-from .core import Feedback
+from .core import Feedback, quietly
 
-__all__ = ["Exam", "ExamQuestion", "available_chapters", "mock_exam", "read_answer"]
+__all__ = ["Exam", "ExamQuestion", "available_chapters", "mock_exam", "read_answer",
+           "study_plan"]
 
 #: Module names of the chapters' exercises: ``ch03``, ``ch07``, ...
 _CHAPTER_MODULE = re.compile(r"ch(\d\d)")
@@ -339,7 +340,8 @@ class ExamQuestion:
                         feedback = None
                 answer = read_answer(answer)
             if feedback is None:
-                feedback = self.source.check(answer)
+                with quietly():              # the exam keeps its own record
+                    feedback = self.source.check(answer)
         except Exception as exc:             # a checker must never stop the exam
             return Feedback("invalid", f"Your answer could not be checked ({exc}); give it in "
                             "the form the question asks for.", "unreadable")
@@ -379,6 +381,8 @@ class Exam:
         self.chapters = tuple(int(c) for c in chapters)
         self.questions = list(questions)
         self.feedback = [None] * len(self.questions)
+        #: The :func:`study_plan` the questions were drawn by (None: a balanced exam).
+        self.plan = None
 
     def __len__(self):
         return len(self.questions)
@@ -410,22 +414,33 @@ class Exam:
         """Whether every question has been submitted (an empty answer counts as submitted)."""
         return all(f is not None for f in self.feedback)
 
+    def credit(self, index):
+        """The marks question `index` earned, 0 to 1: partial for a multi-part answer."""
+        feedback = self.feedback[index]
+        return 0.0 if feedback is None else float(feedback.credit)
+
     def score(self):
-        """``{chapter: (right, total)}`` over the exam's questions, in chapter order."""
+        """``{chapter: (right, total)}`` over the exam's questions, in chapter order.
+
+        ``right`` sums the credit of each answer: 1 for a right one, the share of its parts
+        that are right for a multi-part answer (partial credit), 0 otherwise; a whole number
+        when every credit is.
+        """
         result = {}
-        for question, feedback in zip(self.questions, self.feedback):
+        for k, question in enumerate(self.questions):
             right, total = result.get(question.chapter, (0, 0))
-            result[question.chapter] = (right + int(bool(feedback)), total + 1)
-        return dict(sorted(result.items()))
+            result[question.chapter] = (right + self.credit(k), total + 1)
+        return {ch: (_tidy(r), t) for ch, (r, t) in sorted(result.items())}
 
     def total(self):
-        """``(right, total)`` over the whole exam."""
+        """``(right, total)`` over the whole exam (right with partial credit)."""
         scores = self.score().values()
-        return sum(r for r, _ in scores), sum(t for _, t in scores)
+        return _tidy(sum(r for r, _ in scores)), sum(t for _, t in scores)
 
     def to_revisit(self):
-        """The questions not answered right (wrong, unreadable or not answered), in order."""
-        return [q for q, f in zip(self.questions, self.feedback) if not f]
+        """The questions not answered fully right (wrong, partly right, unreadable or not
+        answered), in order."""
+        return [q for k, q in enumerate(self.questions) if self.credit(k) < 1]
 
     def record(self):
         """A JSON-ready summary: seed, chapters, score per chapter and questions to revisit.
@@ -434,7 +449,9 @@ class Exam:
         -------
         dict
             ``seed``, ``chapters``, ``n_questions``, ``score`` (``{str(chapter): [right,
-            total]}``) and ``revisit`` (a list of ``{"chapter", "key", "seed", "label"}``).
+            total]}``), ``revisit`` (a list of ``{"chapter", "key", "seed", "label"}``) and
+            ``questions`` (every question's ``chapter``, ``key``, ``seed`` and ``credit``: what
+            the next exam's :func:`study_plan` reads).
         """
         return {
             "seed": self.seed,
@@ -443,12 +460,129 @@ class Exam:
             "score": {str(ch): [r, t] for ch, (r, t) in self.score().items()},
             "revisit": [{"chapter": q.chapter, "key": q.key, "seed": q.seed, "label": q.label}
                         for q in self.to_revisit()],
+            "questions": [{"chapter": q.chapter, "key": q.key, "seed": q.seed,
+                           "credit": round(self.credit(k), 4)}
+                          for k, q in enumerate(self.questions)],
         }
 
     def __repr__(self):
         right, total = self.total()
         return (f"Exam(seed={self.seed}, chapters={list(self.chapters)}, "
                 f"{len(self)} questions, {right}/{total} right so far)")
+
+
+def _tidy(x):
+    """`x` as an int when it is a whole number (scores without partial credit stay ints)."""
+    return int(round(x)) if abs(x - round(x)) < 1e-9 else round(float(x), 4)
+
+
+# ---------------------------------------------------------------------------------------------
+# Spaced review: what the history says to ask
+# ---------------------------------------------------------------------------------------------
+
+#: A chapter's weight in an adaptive exam: 1 + WEAK_WEIGHT * (share not right); a chapter with
+#: no results yet weighs UNKNOWN_WEIGHT.
+WEAK_WEIGHT, UNKNOWN_WEIGHT = 2.0, 1.5
+#: After this many right answers in a row a question leaves the review (Leitner boxes 1, 2, 3:
+#: due again 2, 4 and 8 exams later).
+REVIEW_BOXES = 3
+
+
+def _chapter_of(key):
+    match = re.match(r"ch(\d\d)\.", key) if isinstance(key, str) else None
+    return int(match.group(1)) if match else None
+
+
+def study_plan(history):
+    """What a history of results says the next exam should ask: weak chapters, due reviews.
+
+    Spaced review (Leitner's boxes): a question answered wrong (in an exam, or an exercise
+    checked in a notebook) comes back in the next exam, in a new variant; each right answer
+    after that puts it further off (due again 2, then 4 exams later) until, after
+    :data:`REVIEW_BOXES` right answers, it leaves the review. A chapter weighs
+    ``1 + 2 * (share not right)`` over its exam questions and first tries of exercises.
+
+    Parameters
+    ----------
+    history : list of dict
+        Records from :func:`course_lib.progress.read_events` (or only exams, oldest first).
+
+    Returns
+    -------
+    dict
+        ``weights`` ({chapter: weight} for chapters with results), ``due`` (keys due now, in
+        the order they fell due, each with its ``chapter`` and the ``seen`` variants) and
+        ``exams`` (how many exams the history holds).
+
+    Examples
+    --------
+    >>> wrong = {"kind": "attempt", "key": "ch05.Outcodes", "seed": 3, "status": "wrong"}
+    >>> plan = study_plan([wrong])
+    >>> [d["key"] for d in plan["due"]], plan["weights"]
+    (['ch05.Outcodes'], {5: 3.0})
+    >>> later = {"kind": "attempt", "key": "ch05.Outcodes", "seed": 8, "status": "correct"}
+    >>> study_plan([wrong, later])["due"]          # right once: due again 2 exams later
+    []
+    """
+    exams, boxes, seen, tally = 0, {}, {}, {}
+
+    def outcome(key, seed, right, chapter, first=True):
+        seen.setdefault(key, set()).add(seed)
+        if chapter is not None and first:
+            r, t = tally.get(chapter, (0.0, 0))
+            tally[chapter] = (r + right, t + 1)
+        if right < 1:
+            boxes[key] = (0, exams + 1)
+        elif key in boxes:
+            box = boxes[key][0] + 1
+            if box >= REVIEW_BOXES:
+                del boxes[key]
+            else:
+                boxes[key] = (box, exams + 2 ** box)
+
+    tried = set()
+    for event in history:
+        kind = event.get("kind", "exam")
+        if kind == "exam":
+            exams += 1
+            questions = event.get("questions")
+            if questions is None:          # an older record: only the wrong ones are listed
+                questions = [{**q, "credit": 0.0} for q in event.get("revisit", ())]
+            for q in questions:
+                outcome(q.get("key"), q.get("seed"), float(q.get("credit", 0.0)),
+                        q.get("chapter"))
+        elif kind == "attempt" and event.get("status") in ("correct", "wrong"):
+            variant = (event.get("key"), event.get("seed"))
+            outcome(variant[0], variant[1], float(event["status"] == "correct"),
+                    _chapter_of(variant[0]), first=variant not in tried)
+            tried.add(variant)
+    weights = {ch: 1.0 + WEAK_WEIGHT * (1.0 - r / t) for ch, (r, t) in sorted(tally.items())
+               if t}
+    due = [{"key": key, "chapter": _chapter_of(key), "seen": sorted(
+            (s for s in seen.get(key, ()) if s is not None), key=repr)}
+           for key, (box, when) in boxes.items() if when <= exams + 1 and key is not None]
+    return {"weights": weights, "due": due, "exams": exams}
+
+
+def _weighted_counts(rng, chapters, n, weights):
+    """How many questions each chapter gets, in proportion to its weight (at least one each
+    while there are enough questions); the largest remainders get the rest, ties by `rng`."""
+    w = np.array([weights.get(ch, UNKNOWN_WEIGHT) for ch in chapters], dtype=float)
+    order = rng.permutation(len(chapters))
+    if n < len(chapters):
+        ranked = sorted(range(len(chapters)), key=lambda i: (-w[i], int(np.argwhere(
+            order == i)[0, 0])))
+        return {ch: int(i in ranked[:n]) for i, ch in enumerate(chapters)}
+    counts = np.ones(len(chapters), dtype=int)
+    share = w / w.sum() * (n - len(chapters))
+    counts += np.floor(share + 1e-9).astype(int)
+    rest = share - np.floor(share + 1e-9)
+    left = n - int(counts.sum())
+    ranked = sorted(range(len(chapters)), key=lambda i: (-round(rest[i], 9), -w[i],
+                                                         int(np.argwhere(order == i)[0, 0])))
+    for i in ranked[:left]:
+        counts[i] += 1
+    return {ch: int(c) for ch, c in zip(chapters, counts)}
 
 
 def _check_chapters(chapters, available):
@@ -478,7 +612,7 @@ def _per_chapter(rng, chapters, n):
     return {ch: base + (i in lucky) for i, ch in enumerate(chapters)}
 
 
-def mock_exam(seed, chapters=None, n_questions=12):
+def mock_exam(seed, chapters=None, n_questions=12, history=None):
     """A balanced, deterministic mock exam over the chosen chapters.
 
     The questions are spread evenly (the chapters' counts differ by at most one; with fewer
@@ -495,10 +629,17 @@ def mock_exam(seed, chapters=None, n_questions=12):
         The chapters to draw from; all of :func:`available_chapters` by default.
     n_questions : int
         How many questions, 1 to 200.
+    history : list of dict, optional
+        The student's records (:func:`course_lib.progress.read_events`). With results in it
+        the exam adapts (:func:`study_plan`): weak chapters get more of the questions (every
+        chapter chosen keeps one at least), and the questions due for review come first in
+        their chapter, each in a variant the student has not seen. The same seed and history
+        give the same exam; without a history the exam is the balanced one.
 
     Returns
     -------
     Exam
+        Its ``plan`` is the :func:`study_plan` used (None without a history).
 
     Raises
     ------
@@ -512,6 +653,11 @@ def mock_exam(seed, chapters=None, n_questions=12):
     [3, 3, 3, 7, 7, 7]
     >>> [q.key for q in exam] == [q.key for q in mock_exam(7, [3, 7], 6)]
     True
+    >>> wrong = [{"kind": "attempt", "key": "ch07.BSplinePoint", "seed": 1, "status": "wrong"}]
+    >>> adaptive = mock_exam(seed=7, chapters=[3, 7], n_questions=6, history=wrong)
+    >>> first = [q for q in adaptive if q.chapter == 7][0]     # the review comes first
+    >>> [q.chapter for q in adaptive].count(7), first.key, first.seed != 1
+    (4, 'ch07.BSplinePoint', True)
     """
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)):
         raise TypeError(f"seed must be an integer, got {type(seed).__name__}")
@@ -524,8 +670,14 @@ def mock_exam(seed, chapters=None, n_questions=12):
     if not available:
         raise ValueError("there are no exercises or concept questions to draw an exam from")
     chosen = _check_chapters(chapters, available)
+    if history is not None and not isinstance(history, (list, tuple)):
+        raise TypeError("history must be a list of progress records (progress.read_events()), "
+                        f"got {type(history).__name__}")
+    plan = study_plan(history) if history else None
+    adaptive = plan is not None and (plan["weights"] or plan["due"])
     rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, zlib.crc32(b"mock exam")])
-    counts = _per_chapter(rng, chosen, int(n_questions))
+    counts = (_weighted_counts(rng, chosen, int(n_questions), plan["weights"]) if adaptive
+              else _per_chapter(rng, chosen, int(n_questions)))
     numeric_first = bool(rng.integers(2))
     slot = 0
     questions = []
@@ -535,7 +687,14 @@ def mock_exam(seed, chapters=None, n_questions=12):
         class_order = [classes[i] for i in rng.permutation(len(classes))]
         concept_order = [asked[i] for i in rng.permutation(len(asked))]
         used_classes = used_concepts = 0
-        for _ in range(counts[ch]):
+        reviews = _reviews(plan, ch, class_order, concept_order) if adaptive else []
+        for review in reviews[:(counts[ch] + 1) // 2]:      # at most half a chapter's share
+            questions.append(_review_question(ch, review, rng))
+            if isinstance(review[0], type):
+                class_order.remove(review[0])
+            else:
+                concept_order.remove(review[0])
+        for _ in range(counts[ch] - min(len(reviews), (counts[ch] + 1) // 2)):
             want_numeric = (slot % 2 == 0) == numeric_first
             slot += 1
             fresh_concept = used_concepts < len(concept_order)
@@ -547,5 +706,27 @@ def mock_exam(seed, chapters=None, n_questions=12):
                 questions.append(ExamQuestion(ch, concept_order[used_concepts
                                                                 % len(concept_order)]))
                 used_concepts += 1
-    return Exam(seed, chosen, questions)
+    exam = Exam(seed, chosen, questions)
+    exam.plan = plan
+    return exam
+
+
+def _reviews(plan, chapter, classes, concepts):
+    """The questions of `chapter` due for review: (class or concept question, seen seeds)."""
+    by_key = {f"ch{chapter:02d}.{cls.__name__}": cls for cls in classes}
+    by_key.update({q.key: q for q in concepts})
+    return [(by_key[d["key"]], d["seen"]) for d in plan["due"]
+            if d["chapter"] == chapter and d["key"] in by_key]
+
+
+def _review_question(chapter, review, rng):
+    """A review question: a concept question as it is, an exercise in a variant not seen."""
+    source, seen = review
+    if not isinstance(source, type):
+        return ExamQuestion(chapter, source)
+    seen = {s for s in seen if isinstance(s, int)}
+    while True:
+        variant = int(rng.integers(1_000_000))
+        if variant not in seen:
+            return ExamQuestion(chapter, source(seed=variant))
 

@@ -36,6 +36,8 @@ __all__ = [
 SIGNIFICANT = 3
 #: The smallest tolerance: answers computed by hand to 3 decimals pass.
 ATOL = 2e-3
+#: Whole numbers are compared exactly, up to this much float noise (5.0000000001 from numpy).
+WHOLE_SLACK = 1e-6
 #: The share of the exact value an answer rounded to too few digits may be off and still be
 #: called "close" rather than wrong.
 CLOSE_SHARE = 0.05
@@ -100,7 +102,7 @@ def agrees(value, expected, whole=False, floor=ATOL):
     if a.shape != b.shape:
         return False
     if whole:
-        return bool(np.array_equal(a, b))
+        return bool(np.all(np.abs(a - b) <= WHOLE_SLACK))
     return bool(np.all(np.abs(a - b) <= tolerance(b, floor)))
 
 
@@ -507,7 +509,8 @@ def diagnose_vector(answer, expected, mistakes=(), atol=ATOL, what="the vector",
     >>> bool(diagnose_vector([0, 0, -1], [0, 0, 1], sign_free=True))
     True
     """
-    whole = _is_whole(expected) if whole is None else whole
+    if whole is None:                    # a direction or a quaternion is never a count
+        whole = _is_whole(expected) and not (unit or sign_free)
     expected = np.asarray(expected, dtype=float)
     value = _read(answer, what)
     if isinstance(value, Feedback):
@@ -566,7 +569,7 @@ def _is_whole(expected):
 def _not_whole(value, what):
     """A Feedback for an answer that is no whole number where one is expected, else None."""
     flat = np.ravel(value)
-    fractional = flat[flat != np.round(flat)]
+    fractional = flat[np.abs(flat - np.round(flat)) > WHOLE_SLACK]
     if not fractional.size:
         return None
     return Feedback("wrong", f"{_cap(what)} is made of whole numbers (counts, indices or "
@@ -574,18 +577,22 @@ def _not_whole(value, what):
                     "count or index again; nothing here is averaged or interpolated.", "not whole")
 
 
+def _same_whole(a, b):
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and bool(np.all(np.abs(a - b) <= WHOLE_SLACK))
+
+
 def _whole_vector(value, expected, mistakes, what):
     """Whole numbers compared exactly, with the anticipated mistakes and an off-by-one check."""
-    if np.array_equal(value, expected):
+    if _same_whole(value, expected):
         return Feedback("correct", f"{_cap(what)} is right.")
     for mistake in mistakes:
-        wrong = np.asarray(mistake.value, dtype=float)
-        if wrong.shape == value.shape and np.array_equal(value, wrong) \
-                and not np.array_equal(wrong, expected):
+        if _same_whole(value, mistake.value) and not _same_whole(mistake.value, expected):
             return Feedback("wrong", mistake.explanation, mistake.key)
     bad = _not_whole(value, what)
     if bad is not None:
         return bad
+    value = np.round(value)
     diff = value - expected
     off = [int(i) for i in np.flatnonzero(diff)]
     if np.all(np.abs(diff[diff != 0]) == 1):
