@@ -6,12 +6,13 @@ numbers; the checker computes its expected answer with course_lib. The two agree
 seeds is the test (an answer copied from ``self.expected`` is refused: it would test nothing).
 """
 import re
+import warnings
 
 import numpy as np
 import pytest
 
 from course_lib.exercises import mock
-from course_lib.exercises.core import Guidance, Worked
+from course_lib.exercises.core import DrawnExercise, Guidance, Worked
 
 CLASSES = [cls for classes in mock._numeric_pool().values() for cls in classes]
 SEEDS = range(200)
@@ -89,3 +90,68 @@ def test_a_wrong_answer_points_to_the_help():
     assert "hint()" not in fb.message                      # the message itself stays the verdict
     right = ex.check(ex.worked().answer)
     assert right and right.footer is None
+
+
+class Double(DrawnExercise):
+    """A small exercise of this test file (its key: ``test_exercise_help.Double``)."""
+
+    title = "Double a number"
+    answer_form = "number"
+    what = "the double"
+
+    def draw(self, rng):
+        self.x = int(rng.integers(1, 10))
+        self.expected = 2.0 * self.x
+
+    def statement(self):
+        return f"What is $2 \\times {self.x}$?"
+
+    def hints(self):
+        return ["Doubling means adding the number to itself.", f"Add {self.x} and {self.x}.",
+                f"It is more than {self.x} and even."]
+
+    def worked(self):
+        return Worked([f"Add: ${self.x} + {self.x}$.", "That is the double."], self.x + self.x)
+
+
+def test_checks_hints_and_solutions_are_recorded_in_a_notebook_but_not_in_an_exam(
+        tmp_path, monkeypatch):
+    from course_lib import progress
+    from course_lib.exercises.mock import ExamQuestion
+
+    file = tmp_path / "progress.json"
+    monkeypatch.setenv(progress.ENV_VAR, str(file))
+    monkeypatch.setenv(progress.RECORD_VAR, "1")
+    ex = Double(seed=4)
+    ex.check(...)                                          # not an attempt
+    ex.hint()
+    ex.check(-1)
+    ex.solution()
+    ex.check(ex.worked().answer)
+    ExamQuestion(5, Double(seed=5)).check("3")             # the exam keeps its own record
+    events = progress.read_events(file)
+    assert [(e["kind"], e.get("status")) for e in events] == [
+        ("hint", None), ("attempt", "wrong"), ("solution", None), ("attempt", "correct")]
+    assert all(e["key"] == "test_exercise_help.Double" and e["seed"] == 4 for e in events)
+    assert events[1]["hints"] == 1 and events[3]["credit"] == 1.0
+    row = progress.topic_strength(events)["test_exercise_help.Double"]
+    assert (row["attempts"], row["solved"], row["first_try"], row["hints"]) == (2, 1, 0, 1)
+    monkeypatch.setenv(progress.RECORD_VAR, "0")
+    ex.check(0)
+    assert len(progress.read_events(file)) == 4
+
+
+def test_recording_never_stops_an_exercise(tmp_path, monkeypatch):
+    from course_lib import progress
+
+    (tmp_path / "progress.json").mkdir()                   # a folder where the file should be
+    monkeypatch.setenv(progress.ENV_VAR, str(tmp_path / "progress.json"))
+    monkeypatch.setenv(progress.RECORD_VAR, "1")
+    (tmp_path / "file").write_text("a file where the temporary folder should be")
+    monkeypatch.setattr(progress, "_temporary_file",
+                        lambda: tmp_path / "file" / "graphics-course" / "progress.json")
+    ex = Double(seed=4)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assert ex.check(-1).status == "wrong" and ex.check(ex.x * 2).status == "correct"
+    assert any("could not be saved" in str(w.message) for w in caught)

@@ -17,6 +17,7 @@ import importlib
 import json
 import math
 import re
+import time
 from pathlib import Path
 
 import numpy as np
@@ -555,3 +556,46 @@ def test_partial_credit_counts_in_the_exam_score():
     record = exam.record()
     assert record["questions"][0]["credit"] == pytest.approx(share, abs=1e-4)
     assert progress._exam_problem({**record, "date": "d"}) is None
+
+
+def test_widget_adapts_to_the_progress_file_and_says_so(tmp_path):
+    file = tmp_path / "progress.json"
+    for k in range(3):
+        progress.record_event("attempt", key="ch05.Outcodes", seed=k, status="wrong",
+                              path=file)
+    widget = MockExamWidget(seed=2, chapters=[3, 5], n_questions=6, progress_file=file)
+    assert widget.exam.plan is not None
+    assert [q.chapter for q in widget.exam].count(5) > 3
+    assert widget.exam[[q.chapter for q in widget.exam].index(5)].key == "ch05.Outcodes"
+    assert "more questions from chapter 5" in widget.plan_html.value
+    assert "comes back in a new variant" in widget.plan_html.value
+    balanced = MockExamWidget(seed=2, chapters=[3, 5], n_questions=6, progress_file=file,
+                              adaptive=False)
+    assert [q.key for q in balanced.exam] == [q.key for q in mock_exam(2, [3, 5], 6)]
+    assert balanced.plan_html.value == ""
+
+
+def test_a_timed_exam_ends_when_the_page_says_the_time_is_up(tmp_path):
+    file = tmp_path / "progress.json"
+    widget = MockExamWidget(seed=1, chapters=[3], n_questions=3, progress_file=file,
+                            time_limit=10)
+    assert 599 < widget.countdown.left() <= 600
+    widget.submit_answer("[[1, 0], [0, 1]]")                 # graded (wrong or right)
+    widget.countdown.expired = True                          # what the page sends at 0:00
+    assert widget.state.done and widget.state.timed_out
+    assert widget.countdown.stopped and widget.countdown.final == "Time is up"
+    assert "The time is up" in widget.shown["results"]
+    [saved] = progress.read_history(file)
+    assert saved["timed_out"] is True and saved["time_limit"] == 10.0
+    assert sum(f is not None for f in widget.exam.feedback) == 3
+
+
+def test_an_answer_after_the_deadline_is_not_graded_even_if_the_page_was_silent(tmp_path,
+                                                                              monkeypatch):
+    widget = MockExamWidget(seed=1, chapters=[3], n_questions=2, save=False, time_limit=1)
+    now = time.time()
+    monkeypatch.setattr(time, "time", lambda: now + 61)
+    widget.submit_answer("1, 2, 3")
+    assert widget.state.timed_out and all(not f for f in widget.exam.feedback)
+    with pytest.raises(ValueError, match="time_limit"):
+        MockExamWidget(seed=1, chapters=[3], n_questions=1, save=False, time_limit=0)

@@ -12,7 +12,16 @@ questions to revisit, and saves the result to the progress file (:mod:`course_li
 
 The bar chart shows, per chapter of the exam, the questions answered right (green) and not right
 (red) out of those asked (grey outline); its bars move by blitting.
+
+**Adaptive** (the default): the exam is drawn from the student's history in the progress file
+(:func:`course_lib.exercises.mock.study_plan`): weak chapters get more questions and what was
+answered wrong comes back, later, in a new variant; the header says so. **Timed**
+(``time_limit`` in minutes): a countdown ticks in the page; when it reaches zero the exam ends
+and the questions not graded count as not right. The kernel keeps the deadline: an answer
+submitted after it is not graded even if the page never said the time was up.
 """
+import math
+import time
 import warnings
 from dataclasses import dataclass
 
@@ -20,7 +29,7 @@ import numpy as np
 
 from .. import draw, progress
 from ..exercises import mock
-from . import _style
+from . import _countdown, _style
 from ._base import Explorer, labelled
 
 __all__ = ["MockExamWidget", "State", "scene"]
@@ -42,6 +51,7 @@ class State:
 
     index: int = 0
     done: bool = False
+    timed_out: bool = False
 
 
 def _graded(feedback):
@@ -49,11 +59,17 @@ def _graded(feedback):
     return feedback is not None and feedback.status in ("correct", "wrong")
 
 
-def _results_markdown(exam):
+def _results_markdown(exam, timed_out=False):
     right, total = exam.total()
-    lines = [f"### Result: {right} of {total} right", "",
-             "| chapter | right | asked |", "|---:|---:|---:|"]
-    lines += [f"| {ch} | {r} | {t} |" for ch, (r, t) in exam.score().items()]
+    lines = [f"### Result: {right:g} of {total} right", ""]
+    if timed_out:
+        lines += ["**The time is up:** the questions not graded count as not right.", ""]
+    lines += ["| chapter | right | asked |", "|---:|---:|---:|"]
+    lines += [f"| {ch} | {r:g} | {t} |" for ch, (r, t) in exam.score().items()]
+    partial = [q for k, q in enumerate(exam.questions) if 0 < exam.credit(k) < 1]
+    if partial:
+        lines += ["", f"Partial credit on {len(partial)} question"
+                  f"{'s' if len(partial) > 1 else ''} (the share of its parts that are right)."]
     revisit = exam.to_revisit()
     lines.append("")
     if revisit:
@@ -63,6 +79,33 @@ def _results_markdown(exam):
     else:
         lines.append("**Every question right.** Try another seed, or more questions.")
     return "\n".join(lines)
+
+
+def plan_note(exam):
+    """What the header says of an adaptive exam's draw (HTML), or "" for a balanced one.
+
+    Examples
+    --------
+    >>> wrong = [{"kind": "attempt", "key": "ch05.Outcodes", "seed": 1, "status": "wrong"}]
+    >>> plan_note(mock.mock_exam(seed=1, chapters=[3, 5], n_questions=4, history=wrong))
+    'Drawn from your results: more questions from chapter 5; 1 question you got wrong comes back in a new variant.'
+    """
+    plan = exam.plan
+    if not plan:
+        return ""
+    asked = {q.chapter for q in exam}
+    weak = sorted((ch for ch, w in plan["weights"].items() if ch in asked and w > 1.5),
+                  key=lambda ch: -plan["weights"][ch])
+    keys = {d["key"] for d in plan["due"]}
+    back = sum(q.key in keys for q in exam)
+    parts = []
+    if weak:
+        parts.append("more questions from chapter" + ("s " if len(weak) > 1 else " ")
+                     + ", ".join(str(ch) for ch in weak))
+    if back:
+        parts.append(f"{back} question{'s' if back > 1 else ''} you got wrong "
+                     f"come{'' if back > 1 else 's'} back in a new variant")
+    return ("Drawn from your results: " + "; ".join(parts) + ".") if parts else ""
 
 
 def scene(exam, state):
@@ -101,7 +144,8 @@ def scene(exam, state):
     if state.done:
         return {**base, "header": f"<b>Exam finished</b> (seed {exam.seed})", "question": "",
                 "kind": None, "options": (), "feedback": "", "locked": True,
-                "next_label": "Finished", "results": _results_markdown(exam)}
+                "next_label": "Finished",
+                "results": _results_markdown(exam, getattr(state, "timed_out", False))}
     question = exam[state.index]
     feedback = exam.feedback[state.index]
     if question.kind == "concept":
@@ -133,6 +177,11 @@ class MockExamWidget(Explorer):
         Where the result is saved (see :func:`course_lib.progress.progress_path`).
     save : bool
         Save the result at the end of the exam.
+    adaptive : bool
+        Draw the exam from the history in the progress file (see the module's documentation);
+        False: the balanced exam of the seed.
+    time_limit : float, optional
+        Minutes; a countdown, and the exam ends when it reaches zero.
 
     Examples
     --------
@@ -151,12 +200,20 @@ class MockExamWidget(Explorer):
                "with the exercises' feedback, ending with a score per chapter and the questions "
                "to revisit.")
 
-    def __init__(self, seed=0, chapters=None, n_questions=12, progress_file=None, save=True):
+    def __init__(self, seed=0, chapters=None, n_questions=12, progress_file=None, save=True,
+                 adaptive=True, time_limit=None):
         import ipywidgets as w
 
+        if time_limit is not None and (isinstance(time_limit, bool) or not isinstance(
+                time_limit, (int, float)) or not math.isfinite(time_limit)
+                or not 0 < time_limit <= 600):
+            raise ValueError("time_limit must be None or a number of minutes from 0 to 600, "
+                             f"got {time_limit!r}")
         self.chapters, self.n_questions = chapters, n_questions
         self.progress_file, self.save = progress_file, save
-        self.exam = mock.mock_exam(seed, chapters=chapters, n_questions=n_questions)
+        self.adaptive, self.time_limit = bool(adaptive), time_limit
+        self._notes = []
+        self.exam = self._draw(seed)
         self.state = State()
         self.saved = None
         self.shown = {}
@@ -176,6 +233,12 @@ class MockExamWidget(Explorer):
         self.next_button = w.Button(description="Next question", icon="arrow-right")
         self.feedback_out = w.Output()
         self.status = w.HTML()
+        self.plan_html = w.HTML()
+        self.countdown = None
+        if time_limit is not None:
+            self.countdown = _countdown.countdown(time_limit)
+            self.countdown.observe(lambda change: change["new"] and self.time_up(),
+                                   names="expired")
         self.seed_box = labelled(w.BoundedIntText, "seed", label_width="40px", body=110,
                                  value=int(seed), min=0, max=10**9)
         self.new_button = w.Button(description="New exam", icon="refresh")
@@ -184,10 +247,25 @@ class MockExamWidget(Explorer):
         self.new_button.on_click(lambda _: self.new_exam(self.seed_box.value))
         buttons = w.HBox([self.submit_button, self.next_button])
         side = w.VBox([self.fig.canvas, w.HBox([self.seed_box, self.new_button]), self.status])
-        main = w.VBox([self.header, self.question_out, self.text, self.choice, buttons,
-                       self.feedback_out], layout=w.Layout(width="560px"))
+        top = [self.countdown] if self.countdown is not None else []
+        main = w.VBox([*top, self.header, self.plan_html, self.question_out, self.text,
+                       self.choice, buttons, self.feedback_out], layout=w.Layout(width="560px"))
         self.widget = w.HBox([main, side], layout=w.Layout(flex_flow="row wrap"))
         self._show_question()
+
+    def _draw(self, seed):
+        """The exam of `seed`: adapted to the history in the progress file when adaptive."""
+        history = None
+        if self.adaptive:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always", progress.ProgressFileWarning)
+                try:
+                    history = progress.read_events(self.progress_file)
+                except (OSError, ValueError, TypeError) as exc:
+                    caught.append(warnings.WarningMessage(str(exc), UserWarning, "", 0))
+            self._notes = [str(c.message) for c in caught]
+        return mock.mock_exam(seed, chapters=self.chapters, n_questions=self.n_questions,
+                              history=history)
 
     # -- the figure ------------------------------------------------------------------------
 
@@ -239,6 +317,10 @@ class MockExamWidget(Explorer):
     def _show_question(self):
         s = self.update()
         self.header.value = s["header"]
+        note = plan_note(self.exam) if not self.state.done else ""
+        self.plan_html.value = f"<i>{note}</i>" if note else ""
+        if self._notes and not self.status.value:
+            self.status.value = "<b>Note:</b> " + " ".join(self._notes)
         self.shown = {"question": s["question"], "feedback": s["feedback"],
                       "results": s["results"]}
         self._markdown(self.question_out, s["question"] or s["results"])
@@ -273,6 +355,9 @@ class MockExamWidget(Explorer):
         """
         if self.state.done:
             return
+        if self._past_deadline():
+            self.time_up()
+            return
         i = self.state.index
         if _graded(self.exam.feedback[i]):
             return                                   # graded once, as in an exam
@@ -284,9 +369,28 @@ class MockExamWidget(Explorer):
         self.text.disabled = self.choice.disabled = s["locked"]
         self.submit_button.disabled = s["locked"]
 
+    def _past_deadline(self):
+        return self.countdown is not None and self.countdown.deadline <= time.time()
+
+    def time_up(self):
+        """End a timed exam: the questions not graded count as not right; results, saved."""
+        if self.state.done:
+            return
+        for i, feedback in enumerate(self.exam.feedback):
+            if feedback is None:
+                self.exam.submit(i, None)
+        self.state.done = self.state.timed_out = True
+        if self.countdown is not None:
+            self.countdown.stop("Time is up")
+        self._save()
+        self._show_question()
+
     def next(self):
         """The next question (an unsubmitted one counts as unanswered), or the results."""
         if self.state.done:
+            return
+        if self._past_deadline():
+            self.time_up()
             return
         i = self.state.index
         if self.exam.feedback[i] is None:
@@ -295,14 +399,18 @@ class MockExamWidget(Explorer):
             self.state.index = i + 1
         else:
             self.state.done = True
+            if self.countdown is not None:
+                self.countdown.stop(f"Finished with {self.countdown.left() / 60:.0f} min left")
             self._save()
         self._show_question()
 
     def new_exam(self, seed):
         """Start a new exam with `seed` (same chapters and length)."""
-        self.exam = mock.mock_exam(int(seed), chapters=self.chapters,
-                                   n_questions=self.n_questions)
+        self.exam = self._draw(int(seed))
         self.state = State()
+        if self.countdown is not None:
+            self.countdown.stopped = self.countdown.expired = False
+            self.countdown.deadline = time.time() + 60.0 * float(self.time_limit)
         self.saved = None
         self.status.value = ""
         self._build_bars()
@@ -313,14 +421,21 @@ class MockExamWidget(Explorer):
     def _save(self):
         if not self.save:
             return
+        record = self.exam.record()
+        if self.time_limit is not None:
+            record.update(time_limit=float(self.time_limit), timed_out=self.state.timed_out)
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", progress.ProgressFileWarning)
             try:
-                self.saved = progress.record_exam(self.exam, path=self.progress_file)
+                self.saved = progress.record_exam(record, path=self.progress_file)
                 where = progress.progress_path(self.progress_file)
                 message = f"Result saved to <code>{where}</code>."
             except (OSError, ValueError, TypeError) as exc:
                 message = f"<b>The result could not be saved:</b> {exc}"
-        notes = " ".join(str(c.message) for c in caught
-                         if issubclass(c.category, progress.ProgressFileWarning))
-        self.status.value = message + (f"<br><b>Note:</b> {notes}" if notes else "")
+        notes = " ".join([*self._notes, *(str(c.message) for c in caught
+                                          if issubclass(c.category,
+                                                        progress.ProgressFileWarning))])
+        if notes and ("saved to" in notes or "could not be saved" in notes):
+            message = ""                      # the note says where it went instead
+        self.status.value = message + (f"{'<br>' if message else ''}<b>Note:</b> {notes}"
+                                       if notes else "")
