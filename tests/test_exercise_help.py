@@ -148,7 +148,7 @@ def test_recording_never_stops_an_exercise(tmp_path, monkeypatch):
     monkeypatch.setenv(progress.ENV_VAR, str(tmp_path / "progress.json"))
     monkeypatch.setenv(progress.RECORD_VAR, "1")
     (tmp_path / "file").write_text("a file where the temporary folder should be")
-    monkeypatch.setattr(progress, "_temporary_file",
+    monkeypatch.setattr(progress._where, "_temporary_file",
                         lambda: tmp_path / "file" / "graphics-course" / "progress.json")
     ex = Double(seed=4)
     with warnings.catch_warnings(record=True) as caught:

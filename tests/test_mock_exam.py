@@ -555,7 +555,7 @@ def test_partial_credit_counts_in_the_exam_score():
     assert right == pytest.approx(share, abs=1e-4) and total == 1
     record = exam.record()
     assert record["questions"][0]["credit"] == pytest.approx(share, abs=1e-4)
-    assert progress._exam_problem({**record, "date": "d"}) is None
+    assert progress._records._exam_problem({**record, "date": "d"}) is None
 
 
 def test_widget_adapts_to_the_progress_file_and_says_so(tmp_path):

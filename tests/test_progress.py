@@ -8,6 +8,7 @@ import signal
 import subprocess
 import sys
 import textwrap
+import tempfile
 import time
 import warnings
 from datetime import datetime, timezone
@@ -174,8 +175,8 @@ def test_a_save_does_not_read_the_history(tmp_path, monkeypatch):
 
     before = file.read_bytes()
     with monkeypatch.context() as patched:
-        for name in ("_load", "_read_all", "_write_lines", "_split"):
-            patched.setattr(progress, name, no_reading)
+        for name in ("_load", "_read_all", "_write_lines", "_lines_of"):
+            patched.setattr(progress._records, name, no_reading)
         progress.record_exam(record(2))
         progress.record_event("hint", key="ch03.A", seed=1, n=1)
     assert file.stat().st_size > size and file.read_bytes()[:size] == before
@@ -199,7 +200,7 @@ def test_a_process_killed_mid_write_loses_only_its_own_line(tmp_path):
             open({str(started)!r}, "w").close()
             time.sleep(60)                                  # killed here
 
-        progress.os.write = slow_write
+        os.write = slow_write
         progress.record_exam({record(2)!r}, path={str(file)!r})
     """)
     proc = subprocess.Popen([sys.executable, "-c", script], cwd=tmp_path,
@@ -297,7 +298,7 @@ def test_a_version_1_file_is_upgraded_keeping_its_valid_exams(tmp_path):
 
 def test_a_folder_at_the_path_gives_a_warning_and_the_temporary_file(tmp_path, monkeypatch):
     monkeypatch.setenv("TMPDIR", str(tmp_path / "tmp"))
-    monkeypatch.setattr(progress.tempfile, "tempdir", None)
+    monkeypatch.setattr(tempfile, "tempdir", None)
     (tmp_path / "tmp").mkdir()
     (tmp_path / "progress.json").mkdir()
     with pytest.warns(progress.ProgressFileWarning, match="is a folder"):
@@ -580,7 +581,7 @@ def test_a_data_folder_that_cannot_be_created_falls_back_to_a_temporary_file(tmp
     monkeypatch.delenv(progress.ENV_VAR)
     monkeypatch.setattr(sys, "platform", "linux")
     monkeypatch.setenv("TMPDIR", str(tmp_path / "tmp"))
-    monkeypatch.setattr(progress.tempfile, "tempdir", None)       # re-read TMPDIR
+    monkeypatch.setattr(tempfile, "tempdir", None)       # re-read TMPDIR
     (tmp_path / "tmp").mkdir()
     fallback = tmp_path / "tmp" / f"graphics-course-{os.getuid()}" / "progress.json"
     assert progress.progress_path() == fallback.resolve()
@@ -601,7 +602,7 @@ def test_a_temporary_folder_of_another_user_is_refused(tmp_path, monkeypatch):
     monkeypatch.delenv(progress.ENV_VAR)
     monkeypatch.setattr(sys, "platform", "linux")
     monkeypatch.setenv("TMPDIR", str(tmp_path))
-    monkeypatch.setattr(progress.tempfile, "tempdir", None)
+    monkeypatch.setattr(tempfile, "tempdir", None)
     me = os.getuid() + 1                  # pretend to be another user than the folder's owner
     (tmp_path / f"graphics-course-{me}").mkdir()
     monkeypatch.setattr(os, "getuid", lambda: me)

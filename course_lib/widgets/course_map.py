@@ -139,6 +139,11 @@ def course_map(columns=4):
     -------
     IPython.display.Image
         A static picture (:func:`course_lib.draw.show`), shown as a cell's last value.
+
+    Examples
+    --------
+    >>> course_map().data[:4]
+    b'\\x89PNG'
     """
     import matplotlib.image as mpimg
 

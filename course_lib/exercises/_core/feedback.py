@@ -292,7 +292,14 @@ def _has_bool(answer, depth=0):
 
 
 def as_vector(value, n):
-    """A column ``(n, 1)`` or row ``(1, n)`` array read as the vector of `n` entries it is."""
+    """A column ``(n, 1)`` or row ``(1, n)`` array read as the vector of `n` entries it is.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> as_vector(np.ones((3, 1)), 3).shape, as_vector(np.ones((2, 2)), 4).shape
+    ((3,), (2, 2))
+    """
     if value.shape in ((n, 1), (1, n)):
         return value.reshape(n)
     return value

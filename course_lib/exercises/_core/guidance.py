@@ -176,7 +176,16 @@ def _record(exercise, kind, **fields):
 def recorded_check(check):
     """Wrap an exercise's ``check`` so that each outermost call is counted and recorded.
 
-    A ``check`` that calls another (``super().check``) is recorded once.
+    A ``check`` that calls another (``super().check``) is recorded once. Every subclass of
+    :class:`Exercise` that defines ``check`` gets it wrapped so (``__init_subclass__``).
+
+    Examples
+    --------
+    >>> from course_lib.exercises import ch05
+    >>> ex = ch05.RayCastingCount(seed=1)
+    >>> _ = ex.check(-1)
+    >>> ex.attempts, getattr(type(ex).check, "_recorded", False)
+    (1, True)
     """
     if getattr(check, "_recorded", False):
         return check

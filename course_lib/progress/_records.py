@@ -1,238 +1,24 @@
-r"""A student's progress: mock-exam results kept in a small JSON file in the user's data folder.
-
-Where the file lives
---------------------
-By default in the platform's folder for user data: ``$XDG_DATA_HOME/graphics-course/progress.json``
-(``~/.local/share/...`` when the variable is unset) on Linux and other Unix systems,
-``~/Library/Application Support/graphics-course/`` on macOS and ``%APPDATA%\graphics-course\`` on
-Windows. The environment variable ``COURSE_PROGRESS_FILE``, or the ``path`` argument of every
-function, chooses another file (the tests use a temporary one).
-
-Personal results must never end up in a commit, so a file inside the course repository is
-refused, with one exception: the repository's per-user folders :data:`USER_FOLDERS`
-(``.local/``, ``.cache/``, ``.config/``, ``.jupyter/``, ``.ipython/`` at its top level). Those
-are the folders that programs create in the home folder, and on Binder (or any hub that copies
-the course into the home folder) the home folder *is* the repository: the default file is then
-``<repository>/.local/share/graphics-course/progress.json``. The repository's ``.gitignore``
-excludes every one of these folders, so a file in them cannot be committed by accident
-(``tests/test_progress.py`` checks each with ``git check-ignore``, so that this list and
-``.gitignore`` cannot drift apart). Any other place in the repository (next to the notebooks, in
-``course_lib/``) stays refused with a :class:`ValueError`.
-
-When the default folder cannot be written (a hub with a read-only home folder, a data folder
-on a read-only file system), the results of the session go to a per-user file in the system's
-temporary folder, ``<tmp>/graphics-course-<uid>/progress.json``, so that the start page and the
-mock exam still work; saving an exam there issues a :class:`ProgressFileWarning` (the mock
-exam's widget shows it) and the progress report says so, both naming ``COURSE_PROGRESS_FILE``,
-the variable to set to keep the results: a temporary file may be lost when the server stops.
-A file chosen explicitly (the variable or ``path``) that cannot be written is never replaced
-either: that save goes to the same temporary file, with a warning naming the file, what chose
-it and the variable.
-
-What the file holds
--------------------
-One JSON value per line (JSON Lines): the header ``{"format": "graphics-course-progress",
-"version": 2}``, then one record per line, each with its ``kind`` and ``date``: ``"exam"`` (a
-finished mock exam, as made by :meth:`course_lib.exercises.mock.Exam.record`), ``"attempt"``
-(an exercise's answer checked: its ``key`` such as ``"ch05.Outcodes"``, ``seed``, ``status``,
-``diagnosis``, ``credit`` and the ``hints`` seen before it), ``"hint"`` and ``"solution"``.
-
-Writing
--------
-A record is **appended** as one line, under an exclusive lock (``flock``) that every writer
-takes: two kernels of one student (a lesson and the mock exam) saving at the same moment both
-keep their records, and a save costs the same however long the history is. This was chosen
-over rewriting the whole file under a lock, which is also lossless but grows with the history
-(9.7 s per save for 73 MB). Exam results are flushed to disk (``fsync``); a crash can cut
-at most the line being written, which the next reader sets aside and the next writer ends.
-
-Bad files
----------
-Nothing is ever deleted, and a bad file never stops a page. A record that cannot be read (not
-JSON, nested thousands deep, an integer of thousands of digits, a float seed, more right than
-asked...) is moved to ``<file>.rejected-<time>`` and the others are kept; a file that is no
-progress file at all is renamed ``<file>.corrupt-<time>``; a version-1 file (one JSON
-document) is upgraded, keeping a copy. A :class:`ProgressFileWarning` says each of these, and
-:func:`progress_report` repeats it. A progress file that cannot be written (a folder in its
-place, a read-only file or folder) is left alone: the result goes to the session's temporary
-file, with a warning naming ``COURSE_PROGRESS_FILE``.
-"""
+"""The progress file's records: reading, setting aside what is bad, appending under a lock
+(see :mod:`course_lib.progress`)."""
 import contextlib
 import errno
 import json
 import math
 import os
-import re
 import shutil
 import sys
 import tempfile
 import warnings
 from datetime import datetime, timezone
-from pathlib import Path
+
+from . import _where
+from ._where import (_EXAM_KEYS, FORMAT, VERSION, ProgressFileWarning, _keep_hint, _locate,
+                     progress_path)
 
 try:                                    # POSIX; on Windows appends go without a lock
     import fcntl
 except ImportError:                     # pragma: no cover - not on the CI's platform
     fcntl = None
-
-__all__ = ["ENV_VAR", "FORMAT", "RECORD_VAR", "USER_FOLDERS", "VERSION", "ProgressFileWarning",
-           "chapter_scores", "progress_path", "progress_report", "read_events", "read_history",
-           "record_event", "record_exam", "recording", "topic_strength", "weakest_chapters",
-           "weakest_topics"]
-
-#: The environment variable that chooses the progress file.
-ENV_VAR = "COURSE_PROGRESS_FILE"
-#: The name of the file format, stored in the file.
-FORMAT = "graphics-course-progress"
-#: The version of the file format this module reads and writes.
-VERSION = 2
-#: The repository's top-level folders where a progress file may lie: the per-user folders that
-#: programs create in the home folder, which is the repository on Binder. ``.gitignore`` must
-#: exclude each one (``tests/test_progress.py`` checks it with ``git check-ignore``).
-USER_FOLDERS = (".local", ".cache", ".config", ".jupyter", ".ipython")
-_APP = "graphics-course"
-_FILE = "progress.json"
-_EXAM_KEYS = {"date": str, "seed": int, "chapters": list, "n_questions": int, "score": dict,
-              "revisit": list}
-
-
-class ProgressFileWarning(UserWarning):
-    """A progress file could not be read and was set aside (its new name is in the message).
-
-    Examples
-    --------
-    >>> issubclass(ProgressFileWarning, UserWarning)
-    True
-    """
-
-
-def _data_home():
-    """The platform's folder for user data."""
-    home = Path.home()
-    if sys.platform == "win32":
-        return Path(os.environ.get("APPDATA") or home / "AppData" / "Roaming")
-    if sys.platform == "darwin":
-        return home / "Library" / "Application Support"
-    xdg = os.environ.get("XDG_DATA_HOME")
-    return Path(xdg) if xdg and Path(xdg).is_absolute() else home / ".local" / "share"
-
-
-def _repository_root():
-    """The course repository this package runs from (an editable install), or None."""
-    root = Path(__file__).resolve().parent.parent
-    return root if (root / "pyproject.toml").is_file() and (root / "course_lib").is_dir() \
-        else None
-
-
-def _in_user_folder(file, root):
-    """Whether `file` (resolved, inside `root`) lies in one of the :data:`USER_FOLDERS`."""
-    parts = file.relative_to(root).parts
-    return len(parts) > 1 and parts[0] in USER_FOLDERS
-
-
-def _unwritable(folder):
-    """Why `folder` can be neither written nor created, or None if it can (nothing is made).
-
-    The folder, or else its nearest existing ancestor, must be a folder this user may write in.
-    """
-    for candidate in (folder, *folder.parents):
-        if os.path.exists(candidate):
-            if not os.path.isdir(candidate):
-                return f"{candidate} is not a folder"
-            if not os.access(candidate, os.W_OK | os.X_OK):
-                return f"{candidate} is read-only"
-            return None
-    return f"none of {folder}'s parent folders exists"
-
-
-def _temporary_file():
-    """The per-user progress file of the session when the data folder cannot be written."""
-    user = os.getuid() if hasattr(os, "getuid") else os.environ.get("USERNAME", "user")
-    return Path(tempfile.gettempdir()).resolve() / f"{_APP}-{user}" / _FILE
-
-
-def _locate(path=None):
-    """``(file, note, name)``: the progress file, why it is a temporary one (None if it is not),
-    and what chose it (``"path"``, the variable's name, or ``"the default progress file"``).
-
-    See :func:`progress_path` for the rules.
-    """
-    default = False
-    if path is None:
-        env = os.environ.get(ENV_VAR, "").strip()
-        default = not env
-        path = env or _data_home() / _APP / _FILE
-        name = ENV_VAR if env else "the default progress file"
-    else:
-        name = "path"
-    if not isinstance(path, (str, os.PathLike)):
-        raise TypeError(f"path must be a file path (str or os.PathLike), got "
-                        f"{type(path).__name__}")
-    resolved = Path(path).expanduser().resolve()
-    root = _repository_root()
-    if root is not None and resolved.is_relative_to(root) \
-            and not _in_user_folder(resolved, root):
-        folders = ", ".join(f"{f}/" for f in USER_FOLDERS)
-        raise ValueError(f"{name} ({resolved}) lies inside the course repository ({root}); "
-                         "progress is personal data: keep it in your data folder, a "
-                         "temporary folder, or one of the repository's git-ignored per-user "
-                         f"folders ({folders})")
-    if default:
-        reason = _unwritable(resolved.parent)
-        if reason is not None:
-            return _temporary_file(), (
-                f"your data folder {resolved.parent} cannot be written ({reason})"), name
-    return resolved, None, name
-
-
-def _keep_hint():
-    """What to do to keep the results: the variable to set, and how."""
-    return (f"set the environment variable {ENV_VAR} to a file in a folder you can write "
-            f"(in a notebook: import os; os.environ[{ENV_VAR!r}] = "
-            "'/a/writable/folder/progress.json') to keep your results")
-
-
-def progress_path(path=None):
-    """The progress file: `path`, else ``$COURSE_PROGRESS_FILE``, else the user's data folder.
-
-    A file inside the course repository is refused unless it lies in one of its git-ignored
-    per-user folders (:data:`USER_FOLDERS`; on Binder the home folder is the repository). When
-    the default folder cannot be written, the session's results go to a per-user temporary
-    file instead (see the module's documentation).
-
-    Parameters
-    ----------
-    path : str or os.PathLike, optional
-
-    Returns
-    -------
-    pathlib.Path
-        An absolute path (the file need not exist).
-
-    Raises
-    ------
-    TypeError
-        If `path` is not a path.
-    ValueError
-        If the file would lie inside the course repository, outside its per-user folders.
-
-    Examples
-    --------
-    >>> import os, tempfile
-    >>> folder = tempfile.mkdtemp()
-    >>> progress_path(os.path.join(folder, "p.json")).name
-    'p.json'
-    >>> saved = os.environ.pop("COURSE_PROGRESS_FILE", None)
-    >>> progress_path().parts[-2:]
-    ('graphics-course', 'progress.json')
-    >>> os.environ["COURSE_PROGRESS_FILE"] = os.path.join(folder, "env.json")
-    >>> progress_path().name
-    'env.json'
-    >>> if saved is None: del os.environ["COURSE_PROGRESS_FILE"]
-    ... else: os.environ["COURSE_PROGRESS_FILE"] = saved
-    """
-    return _locate(path)[0]
-
 
 # ---------------------------------------------------------------------------------------------
 # The file: a header line, then one JSON record per line
@@ -309,7 +95,7 @@ def _is_header(value):
         and value.get("version") == VERSION and "exams" not in value
 
 
-def _split(raw):
+def _lines_of(raw):
     """``(records, bad)`` of a file's bytes; `bad` lists ``(line number, reason, bytes)``.
 
     Returns ``(None, reason)`` when the file is no progress file at all (neither this version's
@@ -449,7 +235,7 @@ def _repair(file, notices):
             if fd is None:
                 continue
             raw = _read_all(fd)
-            records, bad = _split(raw)
+            records, bad = _lines_of(raw)
             if records is None:             # no progress file at all: set the whole aside
                 if not raw.strip(b"\x00 \n"):
                     return []
@@ -485,7 +271,7 @@ def _load(file):
     except OSError as exc:
         notices.append(f"The progress file {file} cannot be read ({exc.strerror or exc}).")
         return [], notices
-    records, bad = _split(raw)
+    records, bad = _lines_of(raw)
     if records is not None and not bad:
         return records, notices
     if records is None and not raw.strip(b"\x00 \n"):
@@ -666,7 +452,7 @@ def _save(record, path, durable):
                 tried[-1] = f"{file} (chosen by {chosen}) is a folder, not a file"
     else:
         tried.append(note)
-    spare = _temporary_file()
+    spare = _where._temporary_file()
     if spare == file and tried and note is None:
         notices.append(f"Your result could not be saved: {tried[0]}; {_keep_hint()}.")
         return None, notices
@@ -835,250 +621,3 @@ def recording():
     return "ipykernel" in sys.modules
 
 
-# ---------------------------------------------------------------------------------------------
-# Summaries
-# ---------------------------------------------------------------------------------------------
-
-def chapter_scores(history):
-    """``{chapter: (right, total)}`` summed over the exams of `history`, in chapter order.
-
-    Examples
-    --------
-    >>> chapter_scores([{"score": {"3": [1, 2], "7": [2, 2]}}, {"score": {"3": [0, 1]}}])
-    {3: (1, 3), 7: (2, 2)}
-    """
-    totals = {}
-    for exam in history:
-        for chapter, (right, total) in exam["score"].items():
-            r, t = totals.get(int(chapter), (0, 0))
-            totals[int(chapter)] = (r + right, t + total)
-    return dict(sorted(totals.items()))
-
-
-def weakest_chapters(history=None, n=3, path=None):
-    """The `n` chapters with the lowest share of right answers over the recorded exams.
-
-    Ties go to the chapter with more questions asked (the evidence is stronger), then to the
-    earlier chapter. Chapters answered perfectly are left out: they are not weak.
-
-    Parameters
-    ----------
-    history : list of dict, optional
-        Exam records; read from the progress file when omitted.
-    n : int
-        How many chapters at most.
-    path : str or os.PathLike, optional
-        The progress file, when `history` is omitted.
-
-    Returns
-    -------
-    list of dict
-        ``{"chapter", "right", "total", "share"}``, weakest first.
-
-    Examples
-    --------
-    >>> history = [{"score": {"3": [1, 2], "5": [0, 1], "7": [2, 2]}}]
-    >>> [(w["chapter"], w["share"]) for w in weakest_chapters(history)]
-    [(5, 0.0), (3, 0.5)]
-    """
-    if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-        raise ValueError(f"n must be a positive whole number, got {n!r}")
-    if history is None:
-        history = read_history(path)
-    rows = [{"chapter": ch, "right": r, "total": t, "share": r / t}
-            for ch, (r, t) in chapter_scores(history).items() if t > 0 and r < t]
-    rows.sort(key=lambda row: (row["share"], -row["total"], row["chapter"]))
-    return rows[:n]
-
-
-def _short(file):
-    """`file` with the home folder written ``~`` (shorter, and the same for every student)."""
-    try:
-        return "~/" + file.relative_to(Path.home().resolve()).as_posix()
-    except ValueError:
-        return str(file)
-
-
-def topic_strength(events):
-    """Per exercise (a topic of the exam), how the student did: from the attempts recorded.
-
-    Parameters
-    ----------
-    events : list of dict
-        Records of :func:`read_events`.
-
-    Returns
-    -------
-    dict
-        ``{key: {"chapter", "attempts", "variants", "solved", "first_try", "hints",
-        "solutions", "share"}}``: answers checked, variants tried, variants solved, variants
-        solved at their first attempt without a hint, hints and solutions seen, and ``share``
-        = solved at first try / variants tried. In key order.
-
-    Examples
-    --------
-    >>> events = [{"kind": "attempt", "key": "ch05.Outcodes", "seed": 1, "status": "wrong",
-    ...            "hints": 0}, {"kind": "hint", "key": "ch05.Outcodes", "seed": 1},
-    ...           {"kind": "attempt", "key": "ch05.Outcodes", "seed": 1, "status": "correct",
-    ...            "hints": 1},
-    ...           {"kind": "attempt", "key": "ch05.Outcodes", "seed": 2, "status": "correct",
-    ...            "hints": 0}]
-    >>> row = topic_strength(events)["ch05.Outcodes"]
-    >>> row["attempts"], row["variants"], row["solved"], row["first_try"], row["share"]
-    (3, 2, 2, 1, 0.5)
-    """
-    rows, first = {}, {}
-    for event in events:
-        kind, key = event.get("kind"), event.get("key")
-        if kind not in ("attempt", "hint", "solution") or not isinstance(key, str):
-            continue
-        match = re.match(r"ch(\d\d)\.", key)
-        row = rows.setdefault(key, {"chapter": int(match.group(1)) if match else None,
-                                    "attempts": 0, "variants": 0, "solved": 0,
-                                    "first_try": 0, "hints": 0, "solutions": 0,
-                                    "_seen": set(), "_solved": set()})
-        variant = event.get("seed")
-        if kind == "hint":
-            row["hints"] += 1
-        elif kind == "solution":
-            row["solutions"] += 1
-            row["_solved"].add(("shown", variant))   # seeing the solution is no solve
-        else:
-            row["attempts"] += 1
-            if variant not in row["_seen"]:
-                row["_seen"].add(variant)
-                first[(key, variant)] = (event.get("status") == "correct"
-                                         and not event.get("hints", 0))
-                row["first_try"] += first[(key, variant)]
-            if event.get("status") == "correct" and variant not in row["_solved"]:
-                row["_solved"].add(variant)
-                row["solved"] += 1
-    for row in rows.values():
-        row["variants"] = len(row.pop("_seen"))
-        row.pop("_solved")
-        row["share"] = row["first_try"] / row["variants"] if row["variants"] else 0.0
-    return dict(sorted(rows.items()))
-
-
-def weakest_topics(events, n=5):
-    """The `n` exercises tried with the lowest share solved at the first try (none perfect).
-
-    Ties go to the exercise with more variants tried, then to the key.
-
-    Examples
-    --------
-    >>> ev = [{"kind": "attempt", "key": k, "seed": 1, "status": s}
-    ...       for k, s in [("ch03.A", "wrong"), ("ch05.B", "correct"), ("ch07.C", "wrong")]]
-    >>> [row["key"] for row in weakest_topics(ev)]
-    ['ch03.A', 'ch07.C']
-    """
-    if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-        raise ValueError(f"n must be a positive whole number, got {n!r}")
-    rows = [{"key": key, **row} for key, row in topic_strength(events).items()
-            if row["variants"] and row["first_try"] < row["variants"]]
-    rows.sort(key=lambda row: (row["share"], -row["variants"], row["key"]))
-    return rows[:n]
-
-
-def _notice_lines(file):
-    notices = _NOTICES.get(file) or []
-    return ["", *[f"**Note:** {notice}" for notice in notices]] if notices else []
-
-
-def progress_report(path=None):
-    """The student's progress as Markdown: exams, score per chapter, exercises by topic.
-
-    Whatever happened to the file on reading (records set aside, an upgrade, a folder in its
-    place) is said at the end.
-
-    Parameters
-    ----------
-    path : str or os.PathLike, optional
-        See :func:`progress_path`.
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> import os, tempfile
-    >>> file = os.path.join(tempfile.mkdtemp(), "progress.json")
-    >>> progress_report(file).startswith("**No results yet.**")
-    True
-    >>> _ = record_exam({"seed": 1, "chapters": [3, 5], "n_questions": 3,
-    ...                  "score": {"3": [2, 2], "5": [0, 1]}, "revisit": []}, file)
-    >>> "chapter 5 (0 of 1 right)" in progress_report(file)
-    True
-    """
-    file, note, _ = _locate(path)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ProgressFileWarning)    # said in the report instead
-        events = read_events(file)
-    shown = _short(file)
-    notes = _notice_lines(file)
-    warning = [] if note is None else [
-        "", f"**Note:** {note}, so your results are kept in `{shown}`, a temporary file for "
-        f"this session only (it may be lost when the server stops): {_keep_hint()}."]
-    history = [e for e in events if e.get("kind") == "exam"]
-    topics = topic_strength(events)
-    if not history and not topics:
-        where = (f"There is no progress file at `{shown}` yet" if not file.exists() else
-                 f"The progress file `{shown}` holds no results yet")
-        if notes:
-            where = f"Nothing readable is left in `{shown}` (see the note below)"
-        return "\n".join([
-            f"**No results yet.** {where}: check an exercise in `exercises/` or take a mock "
-            "exam in `notebooks/mock_exam.ipynb`, and your progress per chapter and topic will "
-            "show up here.", *notes, *warning])
-    lines = []
-    if history:
-        scores = chapter_scores(history)
-        last = history[-1]
-        lines += [f"**{len(history)} mock exam{'s' if len(history) > 1 else ''} taken**, the "
-                  f"last on {last['date'][:10]} (progress file: `{shown}`).", "",
-                  "| chapter | right | asked | share |", "|---:|---:|---:|---:|"]
-        lines += [f"| {ch} | {_count(r)} | {t} | {100 * r / t:.0f}% |"
-                  for ch, (r, t) in scores.items()]
-        weak = weakest_chapters(history)
-        lines.append("")
-        if weak:
-            listed = ", ".join(f"chapter {w['chapter']} ({_count(w['right'])} of {w['total']} "
-                               "right)" for w in weak)
-            lines.append(f"**Weakest chapters:** {listed}. Reread those lessons and redo their "
-                         "exercises with a new `SEED`; the next mock exam asks more of them.")
-        else:
-            lines.append("**Every question answered right so far.** Try a longer exam.")
-        if last["revisit"]:
-            lines += ["", "To revisit from the last exam: "
-                      + "; ".join(item.get("label", item.get("key", "?"))
-                                  for item in last["revisit"]) + "."]
-    else:
-        lines.append(f"**No mock exam taken yet** (progress file: `{shown}`).")
-    if topics:
-        tried = sum(row["variants"] for row in topics.values())
-        lines += ["", f"**Exercises:** {len(topics)} kinds tried, {tried} variants; "
-                  "per chapter:", "",
-                  "| chapter | kinds tried | variants | solved | right at first try | hints |",
-                  "|---:|---:|---:|---:|---:|---:|"]
-        per = {}
-        for row in topics.values():
-            agg = per.setdefault(row["chapter"], [0, 0, 0, 0, 0])
-            for k, name in enumerate(("variants", "solved", "first_try", "hints")):
-                agg[k + 1] += row[name]
-            agg[0] += 1
-        for ch, (kinds, variants, solved, first_try, hints) in sorted(
-                per.items(), key=lambda item: (item[0] is None, item[0] or 0)):
-            lines.append(f"| {ch if ch is not None else '?'} | {kinds} | {variants} | {solved} "
-                         f"| {100 * first_try / variants:.0f}% | {hints} |")
-        weak = weakest_topics(events, n=3)
-        if weak:
-            lines += ["", "**Topics to practise:** " + ", ".join(
-                f"`{row['key']}` ({row['first_try']} of {row['variants']} right at first try)"
-                for row in weak) + "."]
-    return "\n".join(lines + notes + warning)
-
-
-def _count(x):
-    """A score as written: 3, or 2.5 with partial credit."""
-    return f"{x:g}" if isinstance(x, float) else str(x)
