@@ -10,8 +10,9 @@ import zlib
 import numpy as np
 
 from ... import format as fmt
-from .feedback import (ATOL, UNEXPLAINED, Feedback, _multiple, diagnose_matrix, diagnose_number,
-                       diagnose_parts, diagnose_vector, hinted, read_floats, tolerance)
+from .feedback import (UNEXPLAINED, Feedback, _is_whole, _multiple, _off, diagnose_matrix,
+                       diagnose_number, diagnose_parts, diagnose_vector, hinted, read_floats,
+                       tolerance)
 from .guidance import Guidance, _record, recorded_check
 
 __all__ = [
@@ -455,8 +456,7 @@ class DrawnExercise(Exercise):
         if feedback.diagnosis == "wrong length" and not self.vector_like:
             expected = np.ravel(self.expected)
             value = np.ravel(read_floats(answer))[:len(expected)]
-            off = [int(i) for i in np.flatnonzero(~np.isclose(value, expected, rtol=1e-3,
-                                                                atol=ATOL))]
+            off = [int(i) for i in np.flatnonzero(_off(value, expected))]
             feedback = Feedback("wrong", f"Components {off} (counted from 0) of {self.what} "
                                 "are off.", "components differ")
         return feedback
@@ -512,23 +512,26 @@ def parts_separated(parts, same=SAME, apart=APART):
     >>> parts_separated(right_too), parts_separated(right_too, same=None)
     (True, False)
     """
-    def far(x, y):                               # exactly `apart`, up to rounding, is apart
+    def far(x, y, whole):                        # exactly `apart`, up to rounding, is apart
         d = abs(float(x) - float(y))
+        if whole:                                 # whole numbers are compared exactly
+            return d >= 1 - SAME
         return d >= apart - SAME and d >= TOLERANCES_APART * float(
             min(tolerance(x), tolerance(y)))
 
     for _, expected, mistakes in parts:
+        whole = _is_whole(expected)
         live = []
         for m in mistakes:
             d = abs(float(m.value) - float(expected))
             if same is not None and d <= same:
                 continue
-            if not far(m.value, expected):
+            if not far(m.value, expected, whole):
                 return False
             live.append(m)
         for i, a in enumerate(live):
             for b in live[i + 1:]:
-                if a.key != b.key and not far(a.value, b.value):
+                if a.key != b.key and not far(a.value, b.value, whole):
                     return False
     return True
 
