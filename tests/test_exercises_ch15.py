@@ -16,7 +16,7 @@ from pyglm import glm
 from course_lib.exercises import ch15
 import exercise_harness as harness
 from exercise_harness import SAME, SEEDS, gap
-from course_lib.exercises.core import APART
+from course_lib.exercises.core import APART, TOLERANCES_APART, tolerance
 
 
 # ---------------------------------------------------------------------------------------------
@@ -49,7 +49,8 @@ def reflected_ray(ex):
     right = np.array(glm.reflect(glm.dvec3(*ex.d), glm.dvec3(*n)))
     return right, {"Phong formula": -right,
                    "n not normalized": ex.d - 2 * (ex.d @ ex.n) * ex.n,
-                   "factor 2": ex.d - (ex.d @ n) * n}
+                   "factor 2": ex.d - (ex.d @ n) * n,
+                   "plus sign": ex.d + 2 * (ex.d @ n) * n}
 
 
 def refracted_ray(ex):
@@ -60,6 +61,13 @@ def refracted_ray(ex):
     if upside.any():
         mistakes["ratio upside down"] = upside
     return right, mistakes
+
+
+def apart(a, b):
+    """Two answers the course's tolerance policy tells apart (APART and 2 tolerances)."""
+    distance = abs(a - b)
+    return distance >= APART - SAME and distance >= TOLERANCES_APART * max(
+        float(tolerance(a)), float(tolerance(b)))
 
 
 def critical_angle(ex):
@@ -74,6 +82,10 @@ def schlick_reflectance(ex):
     grazing = (1 - math.cos(math.radians(ex.angle))) ** 5
     right = r * r + (1 - r * r) * grazing
     mistakes = {"R0 not squared": abs(r) + (1 - abs(r)) * grazing, "R0 only": r * r}
+    # np.cos(75): the angle's number taken as radians; named where it is apart from the others
+    as_radians = r * r + (1 - r * r) * (1 - np.cos(ex.angle)) ** 5
+    if all(apart(as_radians, other) for other in [right, *mistakes.values()]):
+        mistakes["degrees"] = as_radians
     if abs(r * r + grazing - right) >= APART:
         mistakes["no (1 - R0)"] = r * r + grazing
     return right, mistakes
