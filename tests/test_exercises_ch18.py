@@ -42,12 +42,15 @@ def case_index(ex):
     bit = [1 if v >= c else 0 for v in f]
     right = bit[0] + 2 * bit[1] + 4 * bit[2] + 8 * bit[3]
     strict = [1 if v > c else 0 for v in f]
-    return right, {
+    mistakes = {
         "below counted": sum((1 - b) << k for k, b in enumerate(bit)),
         "clockwise": bit[0] + 2 * bit[3] + 4 * bit[2] + 8 * bit[1],
-        "reversed bits": 8 * bit[0] + 4 * bit[1] + 2 * bit[2] + bit[3],
         "strict": sum(b << k for k, b in enumerate(strict)),
     }
+    reversed_bits = 8 * bit[0] + 4 * bit[1] + 2 * bit[2] + bit[3]
+    if reversed_bits != mistakes["below counted"]:      # else "below counted" names both
+        mistakes["reversed bits"] = reversed_bits
+    return right, mistakes
 
 
 def cell_points(ex, t_of):

@@ -132,8 +132,8 @@ class RaySphereHit(DrawnExercise):
     answer_form = "point"
     what = "the hit point"
     advice = (r"Solve $a t^2 + b t + c' = 0$ with $a = d \cdot d$, $b = 2\, d \cdot (o - c)$, "
-            r"$c' = \lVert o - c \rVert^2 - r^2$; take the smaller root (the ray enters there) "
-            r"and put it into $o + t\,d$.")
+              r"$c' = \lVert o - c \rVert^2 - r^2$; take the smaller root (the ray enters there) "
+              r"and put it into $o + t\,d$.")
 
     def draw(self, rng):
         self.radius = float(pick(rng, (3.0, 5.0, 7.0)))
@@ -411,7 +411,7 @@ class ReflectedRay(DrawnExercise):
     answer_form = "vector"
     what = "the reflected direction"
     advice = (r"Normalize the normal, then $r = d - 2 (d \cdot \hat n)\, \hat n$. Check: "
-            r"$r \cdot \hat n = -d \cdot \hat n$ (it leaves at the angle it came in).")
+              r"$r \cdot \hat n = -d \cdot \hat n$ (it leaves at the angle it came in).")
 
     def draw(self, rng):
         self.n = pick(rng, ((0.0, 2.0, 0.0), (3.0, 4.0, 0.0), (1.0, 2.0, 2.0), (0.0, 0.0, 3.0),
@@ -442,8 +442,8 @@ class ReflectedRay(DrawnExercise):
                     r"the ray sliding *along* the surface. Reflection reverses the normal part, "
                     r"so it is subtracted twice: $r = d - 2 (d \cdot n)\, n$.", "factor 2"),
             Mistake(d + 2 * k * n, r"You *added* $2 (d \cdot \hat n)\, \hat n$: since "
-                    r"$d \cdot \hat n < 0$ that pushes the ray further into the mirror (its normal "
-                    r"part is tripled instead of reversed). The term is subtracted: "
+                    r"$d \cdot \hat n < 0$ that pushes the ray further into the mirror (its "
+                    r"normal part is tripled instead of reversed). The term is subtracted: "
                     r"$r = d - 2 (d \cdot \hat n)\, \hat n$. Which way $\hat n$ points does not "
                     r"matter, it appears twice; the minus sign does.", "plus sign"),
         ]
@@ -465,7 +465,8 @@ class ReflectedRay(DrawnExercise):
             r"A mirror keeps the part of $d$ along the surface and reverses the part along the "
             r"normal: $r = d - 2 (d \cdot \hat n)\, \hat n$, with $\hat n$ of **unit** length.",
             rf"$\lVert n \rVert = {_num(length)}$, so $\hat n = {_frac(n)}$, and "
-            rf"$d \cdot \hat n = {latex_fraction(k)}$ (negative: the ray travels towards the surface).",
+            rf"$d \cdot \hat n = {latex_fraction(k)}$ (negative: the ray travels towards the "
+            r"surface).",
             rf"$2 (d \cdot \hat n)\, \hat n = {_frac(2 * k * n)}$: subtract it from $d$ (the "
             r"direction $\hat n$ points in does not matter, the minus sign does).",
         ]
@@ -477,11 +478,12 @@ class ReflectedRay(DrawnExercise):
             rf"Normalize the normal: $\lVert n \rVert = \sqrt{{{_num(self.n @ self.n)}}} = "
             rf"{_num(length)}$, $\hat n = n / {_num(length)} = {_frac(n)}$.",
             rf"The normal part of $d$: $d \cdot \hat n = {latex_fraction(k)}$, so "
-            rf"$2 (d \cdot \hat n)\, \hat n = {latex_fraction(2 * k)} \cdot {_frac(n)} = {_frac(2 * k * n)}$.",
+            rf"$2 (d \cdot \hat n)\, \hat n = {latex_fraction(2 * k)} \cdot {_frac(n)} = "
+            rf"{_frac(2 * k * n)}$.",
             rf"Reverse it: $r = d - 2 (d \cdot \hat n)\, \hat n = {_frac(self.d)} - "
             rf"{_frac(2 * k * n)} = {_frac(r)}$.",
-            rf"Check: $r \cdot \hat n = {latex_fraction(r @ n)} = -(d \cdot \hat n)$ (it leaves at the "
-            rf"angle it came in) and $\lVert r \rVert = {_num(np.linalg.norm(r))}$.",
+            rf"Check: $r \cdot \hat n = {latex_fraction(r @ n)} = -(d \cdot \hat n)$ (it leaves "
+            rf"at the angle it came in) and $\lVert r \rVert = {_num(np.linalg.norm(r))}$.",
         ], r)
 
 
@@ -518,10 +520,10 @@ class RefractedRay(DrawnExercise):
     title = "The refracted ray (Snell's law)"
     answer_form = "vector"
     what = "the refracted direction"
-    advice = (r"Snell: $\eta_1 \sin\theta_1 = \eta_2 \sin\theta_2$. The refracted ray stays in the "
-            r"plane of $d$ and $n$, on the other side of the surface, at the angle $\theta_2$ "
-            r"from $-n$; or use $t = \eta\, d + (\eta c_1 - c_2)\, n$ with "
-            r"$\eta = \eta_1/\eta_2$.")
+    advice = (r"Snell: $\eta_1 \sin\theta_1 = \eta_2 \sin\theta_2$. The refracted ray stays in "
+              r"the plane of $d$ and $n$, on the other side of the surface, at the angle "
+              r"$\theta_2$ from $-n$; or use $t = \eta\, d + (\eta c_1 - c_2)\, n$ with "
+              r"$\eta = \eta_1/\eta_2$.")
 
     def draw(self, rng):
         self.eta1, self.eta2 = pick(rng, ((1.0, 1.5), (1.0, 1.33), (1.5, 1.0), (1.33, 1.0),
@@ -583,8 +585,8 @@ class RefractedRay(DrawnExercise):
             rf"Here $\eta = {_num(self.eta1)} / {_num(self.eta2)} = {_num(eta, 4)}$ and "
             rf"$c_1 = -d \cdot n = {_num(c1, 4)}$ (the cosine of ${_num(self.angle)}^\circ$).",
             rf"$\sin^2\theta_2 = \eta^2 (1 - c_1^2) = {_num(sin2, 4)}$, so "
-            rf"$c_2 = \sqrt{{1 - \sin^2\theta_2}} = {_num(c2, 4)}$; now put $\eta$, $c_1$ and $c_2$ "
-            r"into $t = \eta\, d + (\eta c_1 - c_2)\, n$.",
+            rf"$c_2 = \sqrt{{1 - \sin^2\theta_2}} = {_num(c2, 4)}$; now put $\eta$, $c_1$ and "
+            r"$c_2$ into $t = \eta\, d + (\eta c_1 - c_2)\, n$.",
         ]
 
     def worked(self):
@@ -606,7 +608,8 @@ class RefractedRay(DrawnExercise):
 
 
 class CriticalAngle(DrawnExercise):
-    r"""The critical angle :math:`\theta_c = \arcsin(\eta_2 / \eta_1)` of total internal reflection.
+    r"""The critical angle :math:`\theta_c = \arcsin(\eta_2 / \eta_1)` of total internal
+    reflection.
 
     Attributes: ``eta1`` (inside, the denser medium), ``eta2`` (outside).
 
@@ -622,8 +625,8 @@ class CriticalAngle(DrawnExercise):
     title = "The critical angle"
     answer_form = "number"
     what = "the critical angle"
-    advice = (r"At the critical angle the refracted ray grazes the surface, $\theta_2 = 90^\circ$: "
-              r"$\eta_1 \sin\theta_c = \eta_2$.")
+    advice = (r"At the critical angle the refracted ray grazes the surface, "
+              r"$\theta_2 = 90^\circ$: $\eta_1 \sin\theta_c = \eta_2$.")
 
     def draw(self, rng):
         self.eta2 = float(pick(rng, _OUTSIDE))
@@ -734,8 +737,9 @@ class SchlickReflectance(DrawnExercise):
         in_radians = Mistake(r0 + (1 - r0) * (1 - as_radians) ** 5, rf"You took the cosine of "
                              rf"${_num(self.angle)}$ **radians**: `np.cos({_num(self.angle)})` = "
                              rf"${_num(as_radians, 4)}$, but $\cos {_num(self.angle)}^\circ = "
-                             rf"{_num(c, 4)}$. numpy's (and `math`'s) trigonometric functions take "
-                             rf"radians: convert first, `np.cos(np.radians({_num(self.angle)}))`. "
+                             rf"{_num(c, 4)}$. numpy's (and `math`'s) trigonometric functions "
+                             rf"take radians: convert first, "
+                             rf"`np.cos(np.radians({_num(self.angle)}))`. "
                              r"(A reflectance is never outside $[0, 1]$.)", "degrees")
         if well_separated(self.expected, found + [in_radians]):
             found.append(in_radians)
@@ -815,8 +819,8 @@ class ShadowRay(DrawnExercise):
     answer_form = "number"
     what = "the intensity"
     advice = (r"Cast the shadow ray $P + t\,L$ towards the light; if it hits the ball for a $t$ "
-            r"between 0 and the distance to the light, only the ambient term $k_a$ is left. "
-            r"Otherwise $I = k_a + k_d\, (N \cdot L)$ with $L$ normalized.")
+              r"between 0 and the distance to the light, only the ambient term $k_a$ is left. "
+              r"Otherwise $I = k_a + k_d\, (N \cdot L)$ with $L$ normalized.")
 
     def draw(self, rng):
         self.P = np.array([float(rng.integers(-2, 3)), 0.0, float(rng.integers(-2, 3))])
@@ -914,7 +918,8 @@ class ShadowRay(DrawnExercise):
             rf"$N = (0, 1, 0)$, $N \cdot \hat L = {_num(cos, 4)}$.",
             rf"Shadow ray $P + t\,\hat L$ ($\hat L$ is a unit vector, so $a = 1$) against the "
             rf"ball: $f = P - c = {_vec(f)}$, $b = 2\, \hat L \cdot f = {_num(b, 4)}$, "
-            rf"$c' = f \cdot f - r^2 = {_num(c2, 4)}$, discriminant $b^2 - 4c' = {_num(disc, 4)}$.",
+            rf"$c' = f \cdot f - r^2 = {_num(c2, 4)}$, discriminant "
+            rf"$b^2 - 4c' = {_num(disc, 4)}$.",
         ]
         blocked = False
         if disc < 0:
@@ -964,7 +969,7 @@ class MirrorChainColour(DrawnExercise):
     answer_form = "number"
     what = "the pixel intensity"
     advice = (r"Work from the deepest ray back: $I_k = I_{local,k} + k_{r,k}\, I_{k+1}$, with "
-            r"nothing beyond the depth limit.")
+              r"nothing beyond the depth limit.")
 
     def draw(self, rng):
         n = 4
@@ -1183,8 +1188,8 @@ class BVHSavings(_Parts):
 
     title = "What a BVH saves"
     form_hint = r"`[depth, box tests, triangle tests, factor]`."
-    advice = (r"Depth: halve $P$ until $k$ triangles are left, $m = \log_2(P/k)$. Box tests: 2 per "
-              r"inner level. Factor: $P$ divided by (box tests + triangle tests).")
+    advice = (r"Depth: halve $P$ until $k$ triangles are left, $m = \log_2(P/k)$. Box tests: 2 "
+              r"per inner level. Factor: $P$ divided by (box tests + triangle tests).")
 
     def draw(self, rng):
         self.leaf_size = int(pick(rng, (2, 4, 8, 16)))
