@@ -8,16 +8,21 @@ point's intensity is then; the colour a chain of mirror bounces gives a pixel; h
 pixel's ray tree holds; and what a bounding volume hierarchy saves. The ``seed`` draws numbers
 that work out by hand: whole-number points, unit vectors with rational components such as
 :math:`(\tfrac23, \tfrac23, \tfrac13)` or :math:`(0.6, 0.8, 0)`, barycentric coordinates in
-quarters, angles that are multiples of 15 degrees.
+eighths, angles of refraction that are multiples of 15 degrees, refractive indices of real
+media. Counts (rays, levels, tests) are whole numbers, compared exactly; every real answer is
+right to 3 significant digits (the course's one tolerance policy). A few variants are boundary
+cases on purpose (a ray through a triangle's edge), labelled by an attribute ``boundary``.
 
 The expected answers come from :mod:`course_lib.raytracing`. Each exercise names the slips it
 anticipates (the far root of the quadratic, a direction taken as a unit vector when it is not,
 :math:`u` and :math:`v` swapped, the Phong-model reflection formula applied to an incoming ray,
-the ratio of refractive indices upside down, Brewster's angle for the critical angle, the
-weights of a ray tree added instead of multiplied, the primary ray forgotten in a count, ...),
+the ratio of refractive indices upside down, the angle's degrees fed to a cosine that takes
+radians, Brewster's angle for the critical angle, the weights of a ray tree added instead of
+multiplied, the primary ray forgotten in a count, ...),
 computes the answer each slip would give, and draws its numbers again until those answers differ
 clearly from the right one and from each other
-(:class:`~course_lib.exercises.core.DrawnExercise`).
+(:class:`~course_lib.exercises.core.DrawnExercise`). Every exercise offers ``hint()`` (three
+hints, from the idea to this variant's numbers) and ``solution()`` (this variant worked out).
 
 Conventions (those of :mod:`course_lib.raytracing`): a ray is :math:`o + t\,d`; :math:`d` is the
 direction the ray *travels* (towards the surface), so the mirror direction is

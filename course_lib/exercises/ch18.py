@@ -7,14 +7,18 @@ along a ray front to back by hand, the sample at which early ray termination sto
 opacity correction for another step size; a maximum intensity projection of a tiny volume; one
 step of the classic Runge-Kutta method (RK4) and the outward drift of Euler's method on a
 circular flow. The ``seed`` draws numbers that work out by hand: whole corner values, opacities
-in tenths, small whole matrices.
+in tenths and twentieths, small whole matrices. Case indices and counts are whole numbers,
+compared exactly; every real answer is right to 3 significant digits (the course's one
+tolerance policy). A few variants are boundary cases on purpose (a corner value equal to the
+level), labelled by an attribute ``boundary``.
 
 The expected answers come from :mod:`course_lib.scivis`. Each exercise names the slips it
 anticipates (the corners numbered clockwise, the below corners counted, midpoints instead of
 interpolated points, :math:`1 - A` forgotten in the compositing, the RK4 weights replaced by an
 average, ...), computes the answer each slip would give, and draws its numbers again until those
 answers differ clearly from the right one and from each other
-(:class:`~course_lib.exercises.core.DrawnExercise`).
+(:class:`~course_lib.exercises.core.DrawnExercise`). Every exercise offers ``hint()`` (three
+hints, from the idea to this variant's numbers) and ``solution()`` (this variant worked out).
 
 Conventions (those of :mod:`course_lib.scivis`): a corner is *above* when its value is at least
 the level; the corners of a square cell are numbered counter-clockwise from the bottom left
@@ -396,7 +400,8 @@ class SquareCrossings(_Chapter18):
                 rf"$t = \frac{{{_num(self.level)} - {_num(f0)}}}{{{_num(f1)} - {_num(f0)}}} = "
                 rf"{_num(t, 4)}$, $p = p_0 + t\,(p_1 - p_0) = ({_num(point[0], 4)}, "
                 rf"{_num(point[1], 4)})$.")
-        return Worked(steps, points)
+        shown = "`[" + ", ".join(f"[{_num(x, 4)}, {_num(y, 4)}]" for x, y in points) + "]`"
+        return Worked(steps, points, shown=shown)
 
 
 def _read_edge_pairs(answer):
