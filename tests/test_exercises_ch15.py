@@ -11,12 +11,13 @@ typed out below; never with the course_lib.raytracing function the checker calls
 import math
 
 import numpy as np
+import pytest
 from pyglm import glm
 
 from course_lib.exercises import ch15
 import exercise_harness as harness
 from exercise_harness import SAME, SEEDS, gap
-from course_lib.exercises.core import APART
+from course_lib.exercises.core import APART, TOLERANCES_APART, tolerance
 
 
 # ---------------------------------------------------------------------------------------------
@@ -49,7 +50,8 @@ def reflected_ray(ex):
     right = np.array(glm.reflect(glm.dvec3(*ex.d), glm.dvec3(*n)))
     return right, {"Phong formula": -right,
                    "n not normalized": ex.d - 2 * (ex.d @ ex.n) * ex.n,
-                   "factor 2": ex.d - (ex.d @ n) * n}
+                   "factor 2": ex.d - (ex.d @ n) * n,
+                   "plus sign": ex.d + 2 * (ex.d @ n) * n}
 
 
 def refracted_ray(ex):
@@ -60,6 +62,13 @@ def refracted_ray(ex):
     if upside.any():
         mistakes["ratio upside down"] = upside
     return right, mistakes
+
+
+def apart(a, b):
+    """Two answers the course's tolerance policy tells apart (APART and 2 tolerances)."""
+    distance = abs(a - b)
+    return distance >= APART - SAME and distance >= TOLERANCES_APART * max(
+        float(tolerance(a)), float(tolerance(b)))
 
 
 def critical_angle(ex):
@@ -74,6 +83,10 @@ def schlick_reflectance(ex):
     grazing = (1 - math.cos(math.radians(ex.angle))) ** 5
     right = r * r + (1 - r * r) * grazing
     mistakes = {"R0 not squared": abs(r) + (1 - abs(r)) * grazing, "R0 only": r * r}
+    # np.cos(75): the angle's number taken as radians; named where it is apart from the others
+    as_radians = r * r + (1 - r * r) * (1 - np.cos(ex.angle)) ** 5
+    if all(apart(as_radians, other) for other in [right, *mistakes.values()]):
+        mistakes["degrees"] = as_radians
     if abs(r * r + grazing - right) >= APART:
         mistakes["no (1 - R0)"] = r * r + grazing
     return right, mistakes
@@ -202,3 +215,114 @@ def test_numbers_are_nice_for_hand_work():
         assert ex.angle % 15 == 0
     both = {ex.blocked for ex in exercises("ShadowRay")}
     assert both == {True, False}                  # lit and shadowed variants both occur
+
+
+# ---------------------------------------------------------------------------------------------
+# The tolerance policy, whole numbers, boundary variants, named slips and variety
+# ---------------------------------------------------------------------------------------------
+
+#: The parts of an answer that are counts (whole numbers, compared exactly), by exercise.
+WHOLE = {"RayTreeCount": (0, 1), "BVHSavings": (0, 1, 2)}
+#: The exercises whose answer has real numbers in it (all but the ray tree's two counts).
+REAL = [name for name in SPECS if name != "RayTreeCount"]
+#: Seeds for the shares and the variety.
+MANY = range(300)
+#: Among 300 seeds every exercise has at least this many distinct right answers.
+MIN_VARIANTS = 30
+
+
+def significant(x, digits=3):
+    """`x` rounded to `digits` significant digits, as a student writes it down."""
+    return float(f"{x:.{digits}g}")
+
+
+@pytest.mark.parametrize("name", REAL)
+def test_right_answer_to_3_significant_digits_is_accepted(name):
+    solve, _ = SPECS[name]
+    whole = WHOLE.get(name, ())
+    for ex in exercises(name):
+        right, _ = solve(ex)
+        flat = np.ravel(np.asarray(right, dtype=float))
+        typed = [x if i in whole else significant(x) for i, x in enumerate(flat)]
+        answer = typed[0] if np.ndim(right) == 0 else typed
+        fb = ex.check(answer)
+        assert fb.status == "correct", (ex, right, answer, fb)
+
+
+@pytest.mark.parametrize("name", WHOLE)
+def test_counts_are_whole_numbers_compared_exactly(name):
+    solve, _ = SPECS[name]
+    for ex in exercises(name):
+        right, mistakes = solve(ex)
+        right = np.asarray(right, dtype=float)
+        assert ex.check([float(x) for x in right]).status == "correct"     # 3.0 is 3
+        assert ex.check([int(x) if i in WHOLE[name] else x
+                         for i, x in enumerate(right)]).status == "correct"
+        for i in WHOLE[name]:
+            for step in (-1, 1):
+                wrong = right.copy()
+                wrong[i] += step
+                fb = ex.check(wrong.tolist())
+                assert fb.status == "wrong", (ex, i, step, fb)
+                if not any(gap(wrong, m) < SAME for m in mistakes.values()):
+                    assert fb.diagnosis == "off by one", (ex, i, step, fb)
+    ex = exercises(name)[0]
+    right, _ = solve(ex)
+    fb = ex.check([x + 0.5 if i == WHOLE[name][0] else x for i, x in enumerate(right)])
+    assert fb.status == "wrong"                                            # no tolerance
+
+
+def edge_of(u, v):
+    """The triangle's edge that the barycentric point (u, v) lies on, or None inside."""
+    if abs(v) < 1e-9:
+        return "edge v0v1"
+    if abs(u) < 1e-9:
+        return "edge v0v2"
+    if abs(u + v - 1) < 1e-9:
+        return "edge v1v2"
+    return None
+
+
+def test_a_hit_on_an_edge_is_a_labelled_variant():
+    variants = [ch15.RayTriangleHit(seed=seed) for seed in MANY]
+    on_edge = 0
+    for ex in variants:
+        (t, u, v), _ = ray_triangle_hit(ex)
+        assert ex.boundary == edge_of(u, v), (ex, u, v)
+        assert "counts as a hit" in ex.statement()
+        if ex.boundary is not None:
+            on_edge += 1
+            assert "exactly on the boundary" in ex.worked().steps[-1]
+            assert ex.check([t, u, v]).status == "correct"
+    assert 0.10 <= on_edge / len(MANY) <= 0.20, on_edge
+    assert {ex.boundary for ex in variants} == {None, "edge v0v1", "edge v0v2", "edge v1v2"}
+
+
+def test_the_plus_sign_slip_is_named_and_a_flipped_normal_is_no_slip():
+    for ex in exercises("ReflectedRay"):
+        n = ex.n / np.linalg.norm(ex.n)
+        fb = ex.check(ex.d + 2 * (ex.d @ n) * n)
+        assert fb.diagnosis == "plus sign" and "minus sign" in fb.message, (ex, fb)
+        flipped = -n                                       # n the other way: the same mirror
+        assert ex.check(ex.d - 2 * (ex.d @ flipped) * flipped).status == "correct"
+
+
+def test_degrees_in_schlick_are_named_in_most_variants():
+    named = 0
+    for ex in exercises("SchlickReflectance"):
+        right, mistakes = schlick_reflectance(ex)
+        if "degrees" in mistakes:
+            fb = ex.check(mistakes["degrees"])
+            assert fb.diagnosis == "degrees" and "radians" in fb.message
+            named += 1
+        assert ex.check(right).status == "correct"
+    assert named >= len(SEEDS) // 2, named
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_variants_are_many(name):
+    cls = getattr(ch15, name)
+    solve, _ = SPECS[name]
+    answers = {tuple(np.round(np.ravel(np.asarray(solve(cls(seed=seed))[0], dtype=float)), 6))
+               for seed in MANY}
+    assert len(answers) >= MIN_VARIANTS, (name, len(answers))

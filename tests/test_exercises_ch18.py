@@ -42,12 +42,15 @@ def case_index(ex):
     bit = [1 if v >= c else 0 for v in f]
     right = bit[0] + 2 * bit[1] + 4 * bit[2] + 8 * bit[3]
     strict = [1 if v > c else 0 for v in f]
-    return right, {
+    mistakes = {
         "below counted": sum((1 - b) << k for k, b in enumerate(bit)),
         "clockwise": bit[0] + 2 * bit[3] + 4 * bit[2] + 8 * bit[1],
-        "reversed bits": 8 * bit[0] + 4 * bit[1] + 2 * bit[2] + bit[3],
         "strict": sum(b << k for k, b in enumerate(strict)),
     }
+    reversed_bits = 8 * bit[0] + 4 * bit[1] + 2 * bit[2] + bit[3]
+    if reversed_bits != mistakes["below counted"]:      # else "below counted" names both
+        mistakes["reversed bits"] = reversed_bits
+    return right, mistakes
 
 
 def cell_points(ex, t_of):
@@ -354,3 +357,103 @@ def test_questions_are_well_posed():
     for ex in exercises("EarlyTermination"):
         assert 3 <= early_termination(ex)[0] <= 9
     assert {ex.axis for ex in exercises("MaxIntensityProjection")} == {0, 1, 2}
+
+
+# ---------------------------------------------------------------------------------------------
+# The tolerance policy, whole numbers, boundary variants and variety
+# ---------------------------------------------------------------------------------------------
+
+#: The exercises whose answer is a whole number (a case index, a count), compared exactly.
+WHOLE = ("SquareCaseIndex", "CubeTriangleCount", "EarlyTermination")
+#: The exercises whose answer is real numbers.
+REAL = ("SquareCrossings", "CompositeFrontToBack", "OpacityCorrection", "MaxIntensityProjection",
+        "RK4Step", "EulerDrift")
+#: Seeds for the shares and the variety.
+MANY = range(300)
+#: Among 300 seeds every exercise has at least this many variants: distinct right answers, or
+#: distinct statements where the answer is one of a few choices (WHOLE, SaddleResolution).
+MIN_VARIANTS = 30
+
+
+def significant(x, digits=3):
+    """`x` rounded to `digits` significant digits, as a student writes it down."""
+    return float(f"{x:.{digits}g}")
+
+
+@pytest.mark.parametrize("name", REAL)
+def test_right_answer_to_3_significant_digits_is_accepted(name):
+    solve, _ = SPECS[name]
+    for ex in exercises(name):
+        right, _ = solve(ex)
+        typed = np.vectorize(significant)(np.asarray(right, dtype=float))
+        answer = float(typed) if typed.ndim == 0 else typed.tolist()
+        fb = ex.check(answer)
+        assert fb.status == "correct", (ex, right, answer, fb)
+
+
+def test_crossings_rounded_too_far_are_close_not_wrong():
+    for ex in exercises("SquareCrossings", range(40)):
+        right, mistakes = square_crossings(ex)
+        coarse = np.vectorize(lambda x: significant(x, 2))(right)
+        if unordered_gap(coarse, right) > 0.01 and not any(
+                unordered_gap(coarse, m) < SAME for m in mistakes.values()):
+            assert ex.check(coarse.tolist()).diagnosis == "rounded", ex
+
+
+@pytest.mark.parametrize("name", WHOLE)
+def test_whole_answers_are_compared_exactly(name):
+    solve, _ = SPECS[name]
+    for ex in exercises(name):
+        right, mistakes = solve(ex)
+        assert ex.check(float(right)).status == "correct"                 # 3.0 is 3
+        assert ex.check(right + 0.4).status == "wrong"                    # no tolerance
+        slips = {v for values in mistakes.values()
+                 for v in (values if isinstance(values, Either) else [values])}
+        for wrong in (right - 1, right + 1):
+            fb = ex.check(wrong)
+            assert fb.status == "wrong", (ex, wrong, fb)
+            if wrong not in slips:
+                assert fb.diagnosis == "off by one", (ex, wrong, fb)
+
+
+def test_a_corner_on_the_level_is_a_labelled_variant():
+    variants = [ch18.SquareCaseIndex(seed=seed) for seed in MANY]
+    ties = 0
+    for ex in variants:
+        tied = any(f == ex.level for f in ex.corners)
+        assert ex.boundary == ("corner on the level" if tied else None), ex
+        assert r"f_k \ge c" in ex.statement()
+        if tied:
+            ties += 1
+            assert any("exactly on the level" in step and "above" in step
+                       for step in ex.worked().steps)
+            right, mistakes = case_index(ex)
+            assert mistakes["strict"] != right                     # the slip shows here
+            assert ex.check(mistakes["strict"]).status == "wrong"
+    assert 0.10 <= ties / len(MANY) <= 0.20, ties
+
+
+def test_both_saddle_resolutions_come_up_evenly_with_varied_numbers():
+    variants = [ch18.SaddleResolution(seed=seed) for seed in MANY]
+    joined_above = sum(sum(ex.corners) / 4 >= ex.level for ex in variants)
+    assert 0.4 <= joined_above / len(MANY) <= 0.6, joined_above
+    assert len({ex.level for ex in variants}) >= 5
+    assert len({(tuple(ex.corners), ex.level) for ex in variants}) >= 200
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_variants_are_many(name):
+    cls = getattr(ch18, name)
+    variants = [cls(seed=seed) for seed in MANY]
+    solve, form = SPECS[name]
+    if name in WHOLE or form == "pairs":            # the answer is one of a few choices
+        count = len({ex.statement() for ex in variants})
+    else:
+        count = len({tuple(np.round(np.ravel(np.asarray(solve(ex)[0], dtype=float)), 6))
+                     for ex in variants})
+    assert count >= MIN_VARIANTS, (name, count)
+
+
+def test_the_choices_all_come_up():
+    assert {case_index(ch18.SquareCaseIndex(seed=seed))[0] for seed in MANY} == set(range(1, 15))
+    assert len({early_termination(ch18.EarlyTermination(seed=seed))[0] for seed in MANY}) >= 5
