@@ -252,13 +252,15 @@ def mip_level(ex):
 
 def checkerboard(ex):
     s, p = ex.squares, np.asarray(ex.points, float)
-    right = np.array([sum(math.floor(s * c) for c in row) % 2 for row in p], dtype=float)
+    sums = [sum(math.floor(s * c) for c in row) for row in p]
+    right = np.array([total % 2 for total in sums])
     return right, {
         "rounded": np.array([sum(round(s * c) for c in row) % 2 for row in p], dtype=float),
         "truncated toward zero": np.array([sum(int(s * c) for c in row) % 2 for row in p],
                                           dtype=float),
         "squares ignored": np.array([sum(math.floor(c) for c in row) % 2 for row in p],
                                     dtype=float),
+        "no modulo": np.array(sums, dtype=float),
     }
 
 
@@ -267,6 +269,8 @@ UV_GARBAGE = ["uv", {"u": 1}, [[1, 2], [3]], [1, 2, 3], np.eye(2), [math.nan, 0]
 VECTOR3_GARBAGE = ["l", {"l": 1}, [[1, 2], [3]], [1, 2], np.eye(3), [math.nan, 0, 0]]
 THREE_GARBAGE = ["j", {"j": 1}, [1, 2], [[1, 2, 3], [4, 5, 6]], [1, math.nan, 2], [1, 2, 3, 4]]
 FOUR_GARBAGE = ["rho", {"r": 1}, [1, 2, 3], [[1, 2], [3, 4]], [1, 2, 3, math.nan], [1] * 5]
+SIX_GARBAGE = ["T", {"t": 1}, [1, 0, 1, 0], [[1, 0, 1], [0, 1, 0]], [1, 0, 1, 0, 1, math.nan],
+               [1] * 7]
 
 # class name: (independent answer and mistakes, answer form)
 SPECS = {
@@ -280,10 +284,10 @@ SPECS = {
     "CylindricalMap": (cylindrical, "uv"),
     "PlanarMap": (planar, "uv"),
     "MipLevel": (mip_level, "four"),
-    "Checkerboard": (checkerboard, "four"),
+    "Checkerboard": (checkerboard, "six"),
 }
 GARBAGE = {"number": NUMBER_GARBAGE, "uv": UV_GARBAGE, "vector3": VECTOR3_GARBAGE,
-           "three": THREE_GARBAGE, "four": FOUR_GARBAGE}
+           "three": THREE_GARBAGE, "four": FOUR_GARBAGE, "six": SIX_GARBAGE}
 
 
 exercises = harness.variants(ch14)
