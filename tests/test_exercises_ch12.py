@@ -376,3 +376,111 @@ def test_every_situation_is_asked():
     assert asked == set(SITUATIONS)
     assert {shading_method(ex)[0] for ex in exercises("ShadingMethodChoice")} == \
         {"flat", "gouraud", "phong"}
+
+
+# ---------------------------------------------------------------------------------------------
+# Boundary cases, variety, advice
+# ---------------------------------------------------------------------------------------------
+
+#: 300 seeds, for the shares and the variety.
+MANY = range(300)
+
+
+def many(name):
+    cls = getattr(ch12, name)
+    return [cls(seed=seed) for seed in MANY]
+
+
+def boundary_of(name, ex):
+    """The boundary case a variant is, found from its numbers (None for the common case)."""
+    if name == "DiffuseTerm":
+        return "light behind the surface" if diffuse_term(ex)[0] == 0 else None
+    if name == "SpecularTerm":
+        return ("viewer away from the mirror direction"
+                if float(mirror(ex.L, ex.N) @ ex.V) < 0 else None)
+    if name == "PhongTotal":
+        if float(ex.N @ ex.L) < 0:
+            return "light behind the surface"
+        return ("viewer away from the mirror direction"
+                if float(mirror(ex.L, ex.N) @ ex.V) < 0 else None)
+    if name == "BlinnPhongHighlight":
+        return ("halfway vector below the surface" if float(ex.N @ unit(ex.L + ex.V)) < 0
+                else None)
+    if name == "SeveralLights":
+        return "light behind the surface" if np.any(ex.Ls @ ex.N < 0) else None
+    raise KeyError(name)
+
+
+BOUNDARY = ("DiffuseTerm", "SpecularTerm", "PhongTotal", "BlinnPhongHighlight", "SeveralLights")
+
+
+@pytest.mark.parametrize("name", BOUNDARY)
+def test_boundary_cases_are_labelled_variants_of_a_few_seeds(name):
+    variants = many(name)
+    labels = [ex.boundary for ex in variants]
+    assert labels == [boundary_of(name, ex) for ex in variants]
+    share = sum(label is not None for label in labels) / len(labels)
+    assert 0.10 <= share <= 0.20, (name, share)
+    if name == "PhongTotal":                           # both of its cases are asked
+        assert {"light behind the surface", "viewer away from the mirror direction"} <= \
+            set(labels)
+    for ex in variants[:100]:
+        worked = " ".join(ex.worked().steps)
+        assert ("boundary case" in worked) == (ex.boundary is not None), (ex, worked)
+
+
+@pytest.mark.parametrize("name", ["DiffuseTerm", "SpecularTerm"])
+def test_zero_is_the_answer_of_the_boundary_case_only(name):
+    variants = many(name)
+    zero_right = [ex for ex in variants if ex.check(0).status == "correct"]
+    assert zero_right == [ex for ex in variants if ex.boundary is not None]
+    assert len(zero_right) / len(variants) <= 0.20
+
+
+def answer_key(ex):
+    expected = ex.expected
+    return expected if isinstance(expected, str) else tuple(np.round(np.ravel(expected), 9))
+
+
+#: Distinct variants among 300 seeds: distinct right answers, or for a choice between three
+#: methods distinct statements (ShadingMethodChoice: 16 situations, several in a few settings).
+MIN_VARIANTS = 30
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_enough_distinct_variants(name):
+    variants = many(name)
+    if SPECS[name][1] == "method":
+        distinct = {ex.statement() for ex in variants}
+        assert len({phrase for ex in variants for phrase in SITUATIONS
+                    if phrase in ex.situation}) == len(SITUATIONS) == 16
+    else:
+        distinct = {answer_key(ex) for ex in variants}
+    assert len(distinct) >= MIN_VARIANTS, (name, len(distinct))
+
+
+def wrong_answers(right):
+    """Several wrong answers near and far from the right one, part by part too."""
+    right = np.asarray(right, dtype=float)
+    answers = [right + 0.37, right + 1000.5, 2 * right + 1.3, -right - 0.71]
+    if right.ndim:
+        for k in range(right.size):
+            one = right.copy()
+            one[k] += 0.53
+            answers.append(one)
+    return answers
+
+
+@pytest.mark.parametrize("name", [n for n in SPECS if SPECS[n][1] != "method"])
+def test_the_advice_is_given_at_most_once(name):
+    solve, _ = SPECS[name]
+    checked = shown = 0
+    for ex in exercises(name):
+        assert ex.advice
+        right, _ = solve(ex)
+        for answer in wrong_answers(right):
+            fb = ex.check(answer)
+            assert fb.status == "wrong", (ex, answer, fb)
+            assert fb.message.count(ex.advice) <= 1, (ex, answer, fb.message)
+            checked, shown = checked + 1, shown + (ex.advice in fb.message)
+    assert shown >= checked // 2            # the advice is given, where no slip explains
