@@ -114,8 +114,8 @@ class AmbientOcclusionSamples(DrawnExercise):
                 rf"A ray is blocked only by a hit **within** $D = {_num(self.D)}$; a ray with no "
                 r"hit, or whose first hit is further away, escapes. The $\cos\theta$ column is "
                 r"not needed.",
-                rf"The rays that escape: {_rays(open_rays)}; that is "
-                rf"{len(open_rays)} of {len(self.hits)}."]
+                rf"Escaping: {_rays(open_rays)}; that is {len(open_rays)} of "
+                rf"{len(self.hits)}."]
 
     def worked(self):
         open_rays = self._open_rays()
@@ -254,9 +254,9 @@ class AmbientOcclusionWall(DrawnExercise):
                  r"One wall blocks the directions beyond $\beta_0$ on its side: the share "
                  rf"$(1 - \sin\beta_0)/2 = (1 - {_n4(sin0)})/2 = {_n4(blocked)}$."]
         if walls == 1:
-            steps.append(rf"$AO = 1 - {_n4(blocked)} = {_n4(value)}$ "
-                         r"$= \tfrac12 (1 + \sin\beta_0)$.")
+            steps.append(rf"$AO = 1 - {_n4(blocked)} = {_n4(value)}$, which is "
+                         r"$\tfrac12 (1 + \sin\beta_0)$.")
         else:
             steps.append(rf"The trench has two walls: $AO = 1 - 2 \cdot {_n4(blocked)} = "
-                         rf"{_n4(value)}$ $= \sin\beta_0$.")
+                         rf"{_n4(value)}$, which is $\sin\beta_0$ itself.")
         return Worked(steps, value)

@@ -21,6 +21,12 @@ __all__ = [
 _frac = functools.partial(latex_fraction, max_denominator=1024)
 
 
+def _signed(x):
+    """A fraction of a product, bracketed when negative."""
+    text = _frac(x)
+    return f"({text})" if text.startswith("-") else text
+
+
 _TRIPLES = ((3, 4, 5), (4, 3, 5), (6, 8, 10), (8, 6, 10), (5, 12, 13), (12, 5, 13), (0, 4, 4),
             (6, 0, 6), (0, 8, 8), (8, 15, 17), (15, 8, 17), (2, 0, 2), (0, 3, 3))
 
@@ -157,11 +163,11 @@ class MipLevel(_Parts):
         w, h = self.width // 2 ** self.k, self.height // 2 ** self.k
         W, H = self.width, self.height
         return Worked([
-            rf"Along $x$: $(W u_x, H v_x) = ({W} \cdot {_frac(self.du_dx)},\ {H} \cdot "
-            rf"{_frac(self.dv_dx)}) = ({_num(x[0])}, {_num(x[1])})$ texels, of length "
+            rf"Along $x$: $(W u_x, H v_x) = ({W} \cdot {_signed(self.du_dx)},\ {H} \cdot "
+            rf"{_signed(self.dv_dx)}) = ({_num(x[0])}, {_num(x[1])})$ texels, of length "
             rf"$\sqrt{{{_num(x[0] ** 2 + x[1] ** 2)}}} = {_num(lx)}$.",
-            rf"Along $y$: $(W u_y, H v_y) = ({W} \cdot {_frac(self.du_dy)},\ {H} \cdot "
-            rf"{_frac(self.dv_dy)}) = ({_num(y[0])}, {_num(y[1])})$ texels, of length "
+            rf"Along $y$: $(W u_y, H v_y) = ({W} \cdot {_signed(self.du_dy)},\ {H} \cdot "
+            rf"{_signed(self.dv_dy)}) = ({_num(y[0])}, {_num(y[1])})$ texels, of length "
             rf"$\sqrt{{{_num(y[0] ** 2 + y[1] ** 2)}}} = {_num(ly)}$.",
             rf"The footprint is the longer step: $\rho = \max({_num(lx)}, {_num(ly)}) = "
             rf"{_num(rho)}$.",
