@@ -111,15 +111,25 @@ def blinn_phong(ex):
     H = bisector / math.sqrt(float(bisector @ bisector))
     # H bisects the angle: the same angle to L and to V
     assert abs(float(H @ L) - float(H @ V)) < 1e-12
-    s = max(float(N @ H), 0.0) ** n
+    nh = float(N @ H)
+    s = max(nh, 0.0) ** n
     right = np.array([*H, s])
     d = unit(L - V)
+    vector_slips = {"H not normalised": [[*bisector, s], [*(bisector / 2), s]],
+                    "L - V": [[*d, s], [*-d, s]]}
+    if nh < 0:
+        # the halfway vector points into the surface: s = 0, and the slips of the number s
+        # that stay near 0 cannot be told from it; an unclamped power can, when it is large
+        mistakes = {key: Either(values) for key, values in vector_slips.items()}
+        if abs(nh) ** n > 0.06:
+            mistakes["no clamp"] = [*H, nh ** n]
+        return right, mistakes
     return right, {
-        "H not normalised": Either([[*bisector, s], [*(bisector / 2), s],
-                                    [*H, float(N @ bisector) ** n],
-                                    [*H, float(N @ bisector / 2) ** n]]),
+        "H not normalised": Either(vector_slips["H not normalised"]
+                                   + [[*H, float(N @ bisector) ** n],
+                                      [*H, float(N @ bisector / 2) ** n]]),
         "Phong's R·V": [*H, max(float(mirror(L, N) @ V), 0.0) ** n],
-        "L - V": Either([[*d, s], [*-d, s]]
+        "L - V": Either(vector_slips["L - V"]
                         + [[*H, float(N @ (k * d)) ** n] for k in (1, -1)
                            if float(N @ (k * d)) > 0]),
     }
@@ -160,7 +170,17 @@ SITUATIONS = {"**middle** of one large triangle": "phong",
               "only at the **vertices**": "gouraud",
               "gemstone": "flat",
               "most evaluations": "phong",
-              "single uniform colour": "flat"}
+              "single uniform colour": "flat",
+              "spotlight": "phong",
+              "glide smoothly": "phong",
+              "fragment shader": "phong",
+              "purely diffuse": "gouraud",
+              "GL_SMOOTH": "gouraud",
+              "shaped like a star": "gouraud",
+              "which one is cheaper": "gouraud",
+              "sharp edges": "flat",
+              "smaller than a pixel": "flat",
+              "stylised low-poly": "flat"}
 
 
 def shading_method(ex):
@@ -351,7 +371,116 @@ def test_wall_integral_matches_the_flat_floor_limits():
 
 
 def test_every_situation_is_asked():
-    asked = {ex.situation for ex in exercises("ShadingMethodChoice")}
-    assert len(asked) == len(SITUATIONS)
+    asked = {phrase for ex in exercises("ShadingMethodChoice") for phrase in SITUATIONS
+             if phrase in ex.situation}
+    assert asked == set(SITUATIONS)
     assert {shading_method(ex)[0] for ex in exercises("ShadingMethodChoice")} == \
         {"flat", "gouraud", "phong"}
+
+
+# ---------------------------------------------------------------------------------------------
+# Boundary cases, variety, advice
+# ---------------------------------------------------------------------------------------------
+
+#: 300 seeds, for the shares and the variety.
+MANY = range(300)
+
+
+def many(name):
+    cls = getattr(ch12, name)
+    return [cls(seed=seed) for seed in MANY]
+
+
+def boundary_of(name, ex):
+    """The boundary case a variant is, found from its numbers (None for the common case)."""
+    if name == "DiffuseTerm":
+        return "light behind the surface" if diffuse_term(ex)[0] == 0 else None
+    if name == "SpecularTerm":
+        return ("viewer away from the mirror direction"
+                if float(mirror(ex.L, ex.N) @ ex.V) < 0 else None)
+    if name == "PhongTotal":
+        if float(ex.N @ ex.L) < 0:
+            return "light behind the surface"
+        return ("viewer away from the mirror direction"
+                if float(mirror(ex.L, ex.N) @ ex.V) < 0 else None)
+    if name == "BlinnPhongHighlight":
+        return ("halfway vector below the surface" if float(ex.N @ unit(ex.L + ex.V)) < 0
+                else None)
+    if name == "SeveralLights":
+        return "light behind the surface" if np.any(ex.Ls @ ex.N < 0) else None
+    raise KeyError(name)
+
+
+BOUNDARY = ("DiffuseTerm", "SpecularTerm", "PhongTotal", "BlinnPhongHighlight", "SeveralLights")
+
+
+@pytest.mark.parametrize("name", BOUNDARY)
+def test_boundary_cases_are_labelled_variants_of_a_few_seeds(name):
+    variants = many(name)
+    labels = [ex.boundary for ex in variants]
+    assert labels == [boundary_of(name, ex) for ex in variants]
+    share = sum(label is not None for label in labels) / len(labels)
+    assert 0.10 <= share <= 0.20, (name, share)
+    if name == "PhongTotal":                           # both of its cases are asked
+        assert {"light behind the surface", "viewer away from the mirror direction"} <= \
+            set(labels)
+    for ex in variants[:100]:
+        worked = " ".join(ex.worked().steps)
+        assert ("boundary case" in worked) == (ex.boundary is not None), (ex, worked)
+
+
+@pytest.mark.parametrize("name", ["DiffuseTerm", "SpecularTerm"])
+def test_zero_is_the_answer_of_the_boundary_case_only(name):
+    variants = many(name)
+    zero_right = [ex for ex in variants if ex.check(0).status == "correct"]
+    assert zero_right == [ex for ex in variants if ex.boundary is not None]
+    assert len(zero_right) / len(variants) <= 0.20
+
+
+def answer_key(ex):
+    expected = ex.expected
+    return expected if isinstance(expected, str) else tuple(np.round(np.ravel(expected), 9))
+
+
+#: Distinct variants among 300 seeds: distinct right answers, or for a choice between three
+#: methods distinct statements (ShadingMethodChoice: 16 situations, several in a few settings).
+MIN_VARIANTS = 30
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_enough_distinct_variants(name):
+    variants = many(name)
+    if SPECS[name][1] == "method":
+        distinct = {ex.statement() for ex in variants}
+        assert len({phrase for ex in variants for phrase in SITUATIONS
+                    if phrase in ex.situation}) == len(SITUATIONS) == 16
+    else:
+        distinct = {answer_key(ex) for ex in variants}
+    assert len(distinct) >= MIN_VARIANTS, (name, len(distinct))
+
+
+def wrong_answers(right):
+    """Several wrong answers near and far from the right one, part by part too."""
+    right = np.asarray(right, dtype=float)
+    answers = [right + 0.37, right + 1000.5, 2 * right + 1.3, -right - 0.71]
+    if right.ndim:
+        for k in range(right.size):
+            one = right.copy()
+            one[k] += 0.53
+            answers.append(one)
+    return answers
+
+
+@pytest.mark.parametrize("name", [n for n in SPECS if SPECS[n][1] != "method"])
+def test_the_advice_is_given_at_most_once(name):
+    solve, _ = SPECS[name]
+    checked = shown = 0
+    for ex in exercises(name):
+        assert ex.advice
+        right, _ = solve(ex)
+        for answer in wrong_answers(right):
+            fb = ex.check(answer)
+            assert fb.status == "wrong", (ex, answer, fb)
+            assert fb.message.count(ex.advice) <= 1, (ex, answer, fb.message)
+            checked, shown = checked + 1, shown + (ex.advice in fb.message)
+    assert shown >= checked // 2            # the advice is given, where no slip explains

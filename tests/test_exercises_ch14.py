@@ -13,6 +13,7 @@ mapping, mipmap and checkerboard formulas typed out below.
 import math
 
 import numpy as np
+import pytest
 from scipy.ndimage import map_coordinates
 from trimesh.triangles import points_to_barycentric
 
@@ -252,13 +253,15 @@ def mip_level(ex):
 
 def checkerboard(ex):
     s, p = ex.squares, np.asarray(ex.points, float)
-    right = np.array([sum(math.floor(s * c) for c in row) % 2 for row in p], dtype=float)
+    sums = [sum(math.floor(s * c) for c in row) for row in p]
+    right = np.array([total % 2 for total in sums])
     return right, {
         "rounded": np.array([sum(round(s * c) for c in row) % 2 for row in p], dtype=float),
         "truncated toward zero": np.array([sum(int(s * c) for c in row) % 2 for row in p],
                                           dtype=float),
         "squares ignored": np.array([sum(math.floor(c) for c in row) % 2 for row in p],
                                     dtype=float),
+        "no modulo": np.array(sums, dtype=float),
     }
 
 
@@ -267,6 +270,8 @@ UV_GARBAGE = ["uv", {"u": 1}, [[1, 2], [3]], [1, 2, 3], np.eye(2), [math.nan, 0]
 VECTOR3_GARBAGE = ["l", {"l": 1}, [[1, 2], [3]], [1, 2], np.eye(3), [math.nan, 0, 0]]
 THREE_GARBAGE = ["j", {"j": 1}, [1, 2], [[1, 2, 3], [4, 5, 6]], [1, math.nan, 2], [1, 2, 3, 4]]
 FOUR_GARBAGE = ["rho", {"r": 1}, [1, 2, 3], [[1, 2], [3, 4]], [1, 2, 3, math.nan], [1] * 5]
+SIX_GARBAGE = ["T", {"t": 1}, [1, 0, 1, 0], [[1, 0, 1], [0, 1, 0]], [1, 0, 1, 0, 1, math.nan],
+               [1] * 7]
 
 # class name: (independent answer and mistakes, answer form)
 SPECS = {
@@ -280,10 +285,10 @@ SPECS = {
     "CylindricalMap": (cylindrical, "uv"),
     "PlanarMap": (planar, "uv"),
     "MipLevel": (mip_level, "four"),
-    "Checkerboard": (checkerboard, "four"),
+    "Checkerboard": (checkerboard, "six"),
 }
 GARBAGE = {"number": NUMBER_GARBAGE, "uv": UV_GARBAGE, "vector3": VECTOR3_GARBAGE,
-           "three": THREE_GARBAGE, "four": FOUR_GARBAGE}
+           "three": THREE_GARBAGE, "four": FOUR_GARBAGE, "six": SIX_GARBAGE}
 
 
 exercises = harness.variants(ch14)
@@ -349,3 +354,101 @@ def test_perspective_construction_agrees_with_the_closed_form():
         lam, w, q = ex.weights, ex.w, ex.uv
         closed = (lam / w) @ q / (lam / w).sum()
         assert np.allclose(perspective(ex)[0], closed)
+
+
+# ---------------------------------------------------------------------------------------------
+# Whole numbers, variety, advice
+# ---------------------------------------------------------------------------------------------
+
+def anticipated(answer, mistakes):
+    """Whether `answer` is one of the anticipated mistakes."""
+    return any(gap(answer, value) < SAME for values in mistakes.values()
+               for value in (values if isinstance(values, Either) else [values]))
+
+
+#: The entries of an answer that are whole numbers: texel columns, the sides of a mipmap level,
+#: checker values.
+WHOLE = {"WrapModes": (0, 1, 2), "MipLevel": (2, 3), "Checkerboard": tuple(range(6))}
+
+
+@pytest.mark.parametrize("name", WHOLE)
+def test_whole_numbers_are_compared_exactly(name):
+    solve, _ = SPECS[name]
+    for ex in exercises(name):
+        right, mistakes = solve(ex)
+        right = np.asarray(right, dtype=float)
+        assert ex.check([float(x) for x in right]).status == "correct"      # 3.0 is 3
+        assert ex.check([int(x) if k in WHOLE[name] else x
+                         for k, x in enumerate(right)]).status == "correct"
+        for k in WHOLE[name]:
+            nearly = right.copy()
+            nearly[k] += 0.001                        # within any tolerance, but not whole
+            assert ex.check(nearly).status == "wrong", (ex, nearly)
+            for step in (1, -1):
+                answer = right.copy()
+                answer[k] += step
+                fb = ex.check(answer)
+                assert fb.status == "wrong", (ex, answer, fb)
+                if anticipated(answer, mistakes):
+                    continue
+                if name == "Checkerboard":
+                    # one point of the other colour, or a value that is neither 0 nor 1
+                    key = "components differ" if answer[k] in (0, 1) else "not 0 or 1"
+                    assert fb.diagnosis == key and f"[{k}]" in fb.message, (ex, answer, fb)
+                else:
+                    assert fb.diagnosis == "off by one", (ex, answer, fb)
+
+
+def test_the_mipmap_sizes_and_wrap_columns_are_exact_integers():
+    for ex in exercises("WrapModes"):
+        assert ex.expected.dtype.kind == "i"
+    for ex in exercises("Checkerboard"):
+        assert ex.expected.dtype.kind == "i" and set(ex.expected) <= {0, 1}
+        assert len(ex.points) == 6
+    for ex in exercises("MipLevel"):
+        assert ex.width % 2 ** ex.k == 0 and ex.height % 2 ** ex.k == 0
+
+
+#: Distinct right answers among 300 seeds that every exercise reaches.
+MIN_VARIANTS = 30
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_enough_distinct_variants(name):
+    cls = getattr(ch14, name)
+    answers = {tuple(np.round(np.ravel(cls(seed=seed).expected), 9)) for seed in range(300)}
+    assert len(answers) >= MIN_VARIANTS, (name, len(answers))
+
+
+def wrong_answers(right):
+    """Several wrong answers near and far from the right one, part by part too."""
+    right = np.asarray(right, dtype=float)
+    answers = [right + 0.37, right + 1000.5, 2 * right + 1.3, -right - 0.71]
+    flipped = 1 - right                               # for values 0 or 1: the other colour
+    if gap(flipped, right) > SAME:
+        answers.append(flipped)
+    if right.ndim:
+        for k in range(right.size):
+            one = right.copy()
+            one[k] += 0.53
+            answers.append(one)
+            other = right.copy()
+            other[k] = 1 - other[k]
+            if gap(other, right) > SAME:
+                answers.append(other)
+    return answers
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_the_advice_is_given_at_most_once(name):
+    solve, _ = SPECS[name]
+    checked = shown = 0
+    for ex in exercises(name):
+        assert ex.advice
+        right, _ = solve(ex)
+        for answer in wrong_answers(right):
+            fb = ex.check(answer)
+            assert fb.status == "wrong", (ex, answer, fb)
+            assert fb.message.count(ex.advice) <= 1, (ex, answer, fb.message)
+            checked, shown = checked + 1, shown + (ex.advice in fb.message)
+    assert shown >= checked // 4            # the advice is given, where no slip explains

@@ -24,6 +24,12 @@ vectors that start at the surface point and point *away* from it (:math:`L` towa
 :math:`d` is weakened by :math:`f_{att}(d) = 1 / (a + b d + c d^2)`; all lights here are grey
 (one intensity for all three channels), so every intensity is one number.
 
+The boundary cases of the clamps :math:`\max(\cdot, 0)` (a light behind the surface, a viewer
+away from the mirror direction, a halfway vector below the surface) are variants of their own,
+labelled by the attribute ``boundary`` (None for the common case) and drawn in about 15 % of
+the seeds: a case to know, not the usual answer. Every exercise gives step-by-step hints
+(``hint()``) and the worked solution of its variant (``solution()``).
+
 The exercises live in :mod:`course_lib.exercises._ch12`, one module per topic (what
 the topics share is in its ``__init__``); import them from here.
 """

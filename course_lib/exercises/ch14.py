@@ -6,8 +6,11 @@ texture; the texel a repeating, clamping or mirroring texture uses for a coordin
 interpolated with them; perspective-correct interpolation of texture coordinates; the
 spherical, cylindrical and planar texture coordinates of a point; the texel footprint, the
 mipmap level and the size of a level; and a checkerboard. The ``seed`` draws numbers that work
-out by hand: 4 x 4 textures of small whole numbers, coordinates that are multiples of 0.05,
-triangles with whole-number corners, points at whole-number distances from a centre.
+out by hand: 4 x 4 textures of whole numbers, coordinates that are multiples of 0.05,
+triangles with whole-number corners, points at whole-number distances from a centre. Answers
+that are whole numbers (texel columns, the sides of a mipmap level, checker values) are compared
+exactly: ``3.0`` is 3, and one off is wrong (and said to be). Every exercise gives step-by-step
+hints (``hint()``) and the worked solution of its variant (``solution()``).
 
 The expected answers come from :mod:`course_lib.texturing`. Each exercise names the slips it
 anticipates (the half-texel offset forgotten, rows and columns swapped, rows counted from the

@@ -4,6 +4,8 @@ The exercises are in one module per topic of this package; import them from
 :mod:`course_lib.exercises.ch12`.
 """
 
+import math
+
 import numpy as np
 
 from ... import format as fmt
@@ -101,3 +103,72 @@ class _Parts(PartsAnswer, DrawnExercise):
 
 
 _ONE_NUMBER = "**Answer:** one number. " + DECIMALS
+
+
+# ---------------------------------------------------------------------------------------------
+# Boundary cases
+# ---------------------------------------------------------------------------------------------
+
+#: The share of the seeds that draw an exercise's boundary case (a cosine clamped at 0, a light
+#: behind the surface): a case to know, not the common one.
+BOUNDARY_SHARE = 0.15
+
+
+class _Boundary:
+    """Mixin, put before the exercise base: a labelled boundary variant in a share of the seeds.
+
+    ``boundary_cases`` names the cases. ``self.boundary`` is drawn once per seed, before the
+    numbers: one of the cases in about ``boundary_share`` of the seeds, else None; ``draw``
+    then draws the numbers of that case (the drawing loop may draw them several times, but
+    never changes the case, so the share is exactly the one asked for).
+    """
+
+    boundary = None
+    boundary_cases = ()
+    boundary_share = BOUNDARY_SHARE
+
+    def setup(self, rng):
+        self.boundary = (pick(rng, self.boundary_cases) if rng.random() < self.boundary_share
+                         else None)
+        super().setup(rng)
+
+
+# ---------------------------------------------------------------------------------------------
+# Worked solutions
+# ---------------------------------------------------------------------------------------------
+
+def _n4(x):
+    """A number of a worked step: 4 decimals, without trailing zeros."""
+    return fmt.number(x, 4)
+
+
+def _factor(x):
+    """A number inside a product: a simple fraction or a short decimal, negatives bracketed."""
+    text = _frac(x)
+    return f"({text})" if text.startswith("-") else text
+
+
+def _dot(a, b):
+    r"""The dot product written out for a worked step: ``(a1)(b1) + ... = value`` in LaTeX.
+
+    Products with a zero factor are left out.
+
+    Examples
+    --------
+    >>> print(_dot([0.6, 0, 0.8], [0, 1, 1]))
+    0.8 \cdot 1 = 0.8
+    >>> print(_dot([0.6, 0, 0.8], [-1, 0, 0.5]))
+    0.6 \cdot (-1) + 0.8 \cdot 0.5 = -0.2
+    """
+    terms = [rf"{_factor(x)} \cdot {_factor(y)}" for x, y in zip(np.ravel(a), np.ravel(b))
+             if abs(x) > 1e-12 and abs(y) > 1e-12]
+    value = float(np.dot(np.ravel(a), np.ravel(b)))
+    if not terms:
+        return "0"
+    return " + ".join(terms) + f" = {_frac(value)}"
+
+
+def _length(v):
+    r"""``\sqrt{s} = value`` for the length of `v`, with ``s`` the sum of the squares."""
+    s = float(np.dot(v, v))
+    return rf"\sqrt{{{_frac(s)}}} = {_frac(math.sqrt(s))}"

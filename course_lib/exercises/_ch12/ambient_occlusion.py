@@ -8,13 +8,18 @@ import math
 import numpy as np
 
 from ... import shading
-from ..core import DrawnExercise, Mistake, data_note, pick
-from . import _ONE_NUMBER, _num
+from ..core import DrawnExercise, Mistake, Worked, data_note, pick
+from . import _ONE_NUMBER, _n4, _num
 
 __all__ = [
     "AmbientOcclusionSamples",
     "AmbientOcclusionWall",
 ]
+
+
+def _rays(numbers):
+    """"ray 3" or "rays 1, 2, 5"."""
+    return ("ray " if len(numbers) == 1 else "rays ") + ", ".join(map(str, numbers))
 
 
 class AmbientOcclusionSamples(DrawnExercise):
@@ -43,7 +48,7 @@ class AmbientOcclusionSamples(DrawnExercise):
             r"by the number of rays.")
 
     def draw(self, rng):
-        k = int(pick(rng, (8, 10, 12)))
+        k = int(rng.integers(6, 17))
         self.D = float(pick(rng, (1.0, 2.0)))
         kinds = rng.choice(3, size=k, p=[0.4, 0.35, 0.25])       # miss, near hit, far hit
         near = rng.choice(np.arange(0.1, 1.0, 0.1).round(1), size=k) * self.D
@@ -97,8 +102,39 @@ class AmbientOcclusionSamples(DrawnExercise):
             r"(1 = fully open, 0 = fully occluded)." "\n\n" + _ONE_NUMBER + "\n\n"
             + data_note("cos_theta", "hits", "D") + " (`.hits` holds `inf` for no hit.)")
 
+    def _open_rays(self):
+        """The numbers (from 1) of the rays that escape: no hit, or a hit beyond D."""
+        return [k for k, h in enumerate(self.hits, 1) if not h <= self.D]
 
-_SIDES = ((3, 4), (4, 3), (5, 12), (12, 5), (6, 8), (8, 6), (1, 1), (2, 2), (8, 15), (15, 8))
+    def hints(self):
+        open_rays = self._open_rays()
+        return [r"With cosine-weighted directions the estimate of "
+                r"$\frac{1}{\pi}\int v \cos\theta\, d\omega$ is the plain **fraction** of rays "
+                r"that escape: the cosine is already in how the directions were drawn.",
+                rf"A ray is blocked only by a hit **within** $D = {_num(self.D)}$; a ray with no "
+                r"hit, or whose first hit is further away, escapes. The $\cos\theta$ column is "
+                r"not needed.",
+                rf"Escaping: {_rays(open_rays)}; that is {len(open_rays)} of "
+                rf"{len(self.hits)}."]
+
+    def worked(self):
+        open_rays = self._open_rays()
+        blocked = [k for k in range(1, len(self.hits) + 1) if k not in open_rays]
+        value = len(open_rays) / len(self.hits)
+        return Worked([
+            r"The directions were drawn with the density $\cos\theta/\pi$, so each ray counts "
+            r"1 (it escapes) or 0 (it is blocked): no cosine weights, no $1/\pi$.",
+            rf"Blocked, by a hit within $D = {_num(self.D)}$: {_rays(blocked)}. Escaping (no "
+            rf"hit, or a hit beyond $D$): {_rays(open_rays)}.",
+            rf"$AO = {len(open_rays)} / {len(self.hits)} = {_n4(value)}$.",
+        ], value)
+
+
+#: (a, h): the distance to the wall (or the trench's half-width) and the height. Whole numbers
+#: up to 8 without a common factor, and Pythagorean pairs, whose a / sqrt(a^2 + h^2) is a
+#: simple fraction. Pairs whose slips cannot be told apart are not drawn.
+_SIDES = tuple((a, h) for a in range(1, 9) for h in range(1, 9) if math.gcd(a, h) == 1) + (
+    (6, 8), (8, 6), (9, 12), (12, 9), (5, 12), (12, 5), (8, 15), (15, 8), (7, 24), (24, 7))
 
 
 class AmbientOcclusionWall(DrawnExercise):
@@ -115,7 +151,7 @@ class AmbientOcclusionWall(DrawnExercise):
 
     Examples
     --------
-    >>> ex = AmbientOcclusionWall(seed=11)
+    >>> ex = AmbientOcclusionWall(seed=2)
     >>> ex.kind, ex.check(ex.expected).status
     ('wall', 'correct')
     >>> ex.check(1 - ex.expected).diagnosis
@@ -125,6 +161,8 @@ class AmbientOcclusionWall(DrawnExercise):
     title = "Ambient occlusion next to a wall"
     answer_form = "number"
     what = "the ambient-occlusion factor"
+    #: For a = h, swapping them changes nothing.
+    may_coincide = ("a and h swapped",)
     advice = (r"The top edge of the wall is seen at $\beta_0 = \arctan(a/h)$ from the normal, "
             r"$\sin\beta_0 = a/\sqrt{a^2 + h^2}$; the wall blocks the directions beyond it, "
             r"the fraction $(1 - \sin\beta_0)/2$.")
@@ -187,3 +225,38 @@ class AmbientOcclusionWall(DrawnExercise):
             r"projected onto the vertical plane across the wall(s), lies beyond $\beta$ on one "
             r"side make up the fraction $(1 - \sin\beta)/2$." "\n\n" + _ONE_NUMBER + "\n\n"
             + data_note("kind", "a", "h"))
+
+    def hints(self):
+        a, h = self.a, self.h
+        hyp = math.hypot(a, h)
+        sin0 = a / hyp
+        walls = ("the wall blocks" if self.kind == "wall" else
+                 "each of the two walls blocks")
+        return [r"Find the angle $\beta_0$ from the normal (vertical) at which the top edge of "
+                r"the wall is seen; the useful fact then gives the cosine-weighted share of the "
+                r"directions beyond it, $(1 - \sin\beta_0)/2$, which the wall blocks.",
+                rf"$\tan\beta_0 = a/h$ (horizontal distance over height), so "
+                rf"$\sin\beta_0 = a/\sqrt{{a^2 + h^2}} = {_num(a)}/\sqrt{{{_num(a * a + h * h)}}}"
+                rf" = {_n4(sin0)}$.",
+                rf"So {walls} $(1 - {_n4(sin0)})/2 = {_n4((1 - sin0) / 2)}$ of the "
+                r"cosine-weighted hemisphere; $AO$ is what is left."]
+
+    def worked(self):
+        a, h = float(self.a), float(self.h)
+        hyp = math.sqrt(a * a + h * h)
+        sin0 = a / hyp
+        blocked = (1 - sin0) / 2
+        walls = 1 if self.kind == "wall" else 2
+        value = 1 - walls * blocked
+        steps = [rf"The top edge of the wall is seen at the angle $\beta_0$ from the normal with "
+                 rf"$\tan\beta_0 = a/h = {_num(a)}/{_num(h)}$, so $\sin\beta_0 = "
+                 rf"a/\sqrt{{a^2 + h^2}} = {_num(a)}/{_n4(hyp)} = {_n4(sin0)}$.",
+                 r"One wall blocks the directions beyond $\beta_0$ on its side: the share "
+                 rf"$(1 - \sin\beta_0)/2 = (1 - {_n4(sin0)})/2 = {_n4(blocked)}$."]
+        if walls == 1:
+            steps.append(rf"$AO = 1 - {_n4(blocked)} = {_n4(value)}$, which is "
+                         r"$\tfrac12 (1 + \sin\beta_0)$.")
+        else:
+            steps.append(rf"The trench has two walls: $AO = 1 - 2 \cdot {_n4(blocked)} = "
+                         rf"{_n4(value)}$, which is $\sin\beta_0$ itself.")
+        return Worked(steps, value)

@@ -8,10 +8,11 @@ import math
 import numpy as np
 
 from ... import shading
-from ..core import (DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, close, data_note,
-                    gap, is_unanswered, pick, read_floats, well_separated)
-from . import (_DOWN, _DOWN_RV, _ONE_NUMBER, _UP, _UP_DOT, _UP_NH, _UP_RV, _frame, _integer_vector,
-               _material_words, _nice_unit, _num, _pair, _unit, _vec)
+from ..core import (DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, Worked, close,
+                    data_note, gap, is_unanswered, pick, read_floats, well_separated)
+from . import (_DOWN, _DOWN_RV, _ONE_NUMBER, _UP, _UP_DOT, _UP_NH, _UP_RV, _Boundary, _dot, _frac,
+               _frame, _integer_vector, _length, _material_words, _n4, _nice_unit, _num, _pair,
+               _unit, _vec)
 
 __all__ = [
     "BlinnPhongHighlight",
@@ -27,42 +28,54 @@ def _matte(kd):
     return shading.Material(ka=0.0, kd=kd, ks=0.0, shininess=1.0)
 
 
-class DiffuseTerm(DrawnExercise):
+#: The boundary case of the exercises where a light may be behind the surface.
+BEHIND = "light behind the surface"
+
+
+class DiffuseTerm(_Boundary, DrawnExercise):
     r"""The diffuse term :math:`I_d = k_d I_l \max(N \cdot L, 0)` (Lambert's cosine law).
 
     Two kinds of variant: ``kind == "position"`` gives the surface point ``P``, its unit normal
     ``N`` and the position ``Q`` of a point light (so :math:`L` must be normalised);
     ``kind == "angle"`` gives the angle of incidence ``theta_deg`` between :math:`N` and
-    :math:`L`, in degrees. In some variants the light is behind the surface.
+    :math:`L`, in degrees. In the boundary variant (``boundary == "light behind the
+    surface"``, about 15 % of the seeds) :math:`N \cdot L < 0` and the answer is 0; otherwise
+    ``boundary`` is None and the light is in front of the surface.
 
-    Attributes: ``kind``, ``kd``, ``Il``, and ``P``, ``N``, ``Q`` or ``theta_deg``.
+    Attributes: ``kind``, ``kd``, ``Il``, ``boundary``, and ``P``, ``N``, ``Q`` or
+    ``theta_deg``.
 
     Examples
     --------
     >>> ex = DiffuseTerm(seed=3)
-    >>> ex.kind, ex.check(ex.expected).status
-    ('position', 'correct')
+    >>> ex.kind, ex.boundary, ex.check(ex.expected).status
+    ('position', None, 'correct')
     >>> ex.check(ex.kd * ex.Il * (ex.N @ (ex.Q - ex.P))).diagnosis
     'L not normalised'
-    >>> ex = DiffuseTerm(seed=0)
+    >>> ex = DiffuseTerm(seed=6)
     >>> ex.kind, ex.check(ex.kd * ex.Il * np.cos(ex.theta_deg)).diagnosis
     ('angle', 'degrees')
+    >>> behind = next(DiffuseTerm(seed=s) for s in range(50) if DiffuseTerm(seed=s).boundary)
+    >>> behind.boundary, behind.expected, behind.check(0).status
+    ('light behind the surface', 0.0, 'correct')
     """
 
     title = "The diffuse term"
     answer_form = "number"
     what = "the diffuse intensity"
     may_coincide = ("sine",)
+    boundary_cases = (BEHIND,)
     advice = (r"Use $I_d = k_d\, I_l \max(N \cdot L, 0)$ with the **unit** vector $L$ from the "
-            r"point towards the light; $N \cdot L = \cos\theta$, the cosine of the angle of "
-            r"incidence measured from the normal.")
+              r"point towards the light; $N \cdot L = \cos\theta$, the cosine of the angle of "
+              r"incidence measured from the normal.")
 
     def draw(self, rng):
         self.kd = float(pick(rng, (0.4, 0.5, 0.6, 0.8)))
         self.Il = float(pick(rng, (1.0, 1.5, 2.0, 0.5)))
         if rng.random() < 0.4:
             self.kind = "angle"
-            self.theta_deg = int(pick(rng, (30, 45, 60, 75, 120, 135, 150)))
+            self.theta_deg = int(pick(rng, (105, 120, 135, 150, 165) if self.boundary else
+                                      (15, 30, 45, 60, 75)))
             t = math.radians(self.theta_deg)
             light = shading.directional_light([math.sin(t), 0.0, math.cos(t)], self.Il)
             self.expected = float(shading.phong(None, [0, 0, 1], [0, 0, 1], light,
@@ -73,6 +86,8 @@ class DiffuseTerm(DrawnExercise):
             self.N = _frame(_nice_unit(rng) if rng.random() < 0.5 else [0, 0, 1.0], axis)
             self.P = rng.integers(-2, 3, size=3).astype(float)
             d, self._distance = _integer_vector(rng)
+            if (self.N @ d < 0) != bool(self.boundary):     # the light on the side asked for
+                d = -d
             self.Q = self.P + d
             light = shading.point_light(self.Q, self.Il)
             self.expected = float(shading.phong(self.P, self.N, self.N, light,
@@ -82,7 +97,7 @@ class DiffuseTerm(DrawnExercise):
         if self.kind == "angle":
             return True
         cos = float(self.N @ (self.Q - self.P)) / self._distance
-        return 0.15 < abs(cos) < 0.99
+        return -0.99 < cos < -0.15 if self.boundary else 0.15 < cos < 0.99
 
     def mistakes(self):
         kd, Il = self.kd, self.Il
@@ -139,6 +154,55 @@ class DiffuseTerm(DrawnExercise):
         return (setting + r" Compute the diffuse term $I_d$ of the Phong model at the point."
                 "\n\n" + _ONE_NUMBER + "\n\n" + data_note(*names))
 
+    def _cosine(self):
+        """N . L as a student works it out: (the steps, the value)."""
+        if self.kind == "angle":
+            cos = math.cos(self.theta_deg * math.pi / 180)
+            return [rf"The angle of incidence is given: $N \cdot L = \cos\theta = "
+                    rf"\cos {self.theta_deg}^\circ = {_n4(cos)}$ (in radians, "
+                    rf"${self.theta_deg}^\circ = {self.theta_deg}\pi/180 = "
+                    rf"{_n4(self.theta_deg * math.pi / 180)}$)."], cos
+        d = np.asarray(self.Q, dtype=float) - np.asarray(self.P, dtype=float)
+        distance = math.sqrt(float(d @ d))
+        L = d / distance
+        return [rf"$L$ points from the surface point to the light: $Q - P = {_vec(d)}$, of "
+                rf"length ${_length(d)}$, so $L = (Q - P) / {_num(distance)} = {_vec(L)}$.",
+                rf"$N \cdot L = {_dot(self.N, L)}$."], float(np.asarray(self.N) @ L)
+
+    def hints(self):
+        _, cos = self._cosine()
+        if self.kind == "angle":
+            second = (rf"$N \cdot L$ is the cosine of the given angle, $\cos {self.theta_deg}"
+                      r"^\circ$: the angle is in **degrees** (`np.cos` wants radians, "
+                      rf"${self.theta_deg}^\circ = {self.theta_deg}\pi/180$).")
+        else:
+            d = self.Q - self.P
+            second = (r"$L$ is the **unit** vector from the point towards the light, "
+                      rf"$L = (Q - P)/\lVert Q - P \rVert$: here $Q - P = {_vec(d)}$, of length "
+                      rf"{_num(self._distance)}.")
+        if cos < 0:
+            third = (rf"Here $N \cdot L = {_frac(cos)}$, a negative cosine: where is the light? "
+                     r"What does $\max(N \cdot L, 0)$ make of it?")
+        else:
+            third = (rf"Here $N \cdot L = {_frac(cos)}$; multiply it by "
+                     rf"$k_d I_l = {_num(self.kd)} \cdot {_num(self.Il)}$.")
+        return [r"Lambert's cosine law: $I_d = k_d\, I_l \max(N \cdot L, 0)$, where "
+                r"$N \cdot L$ is the cosine of the angle between the normal and the direction "
+                r"towards the light.", second, third]
+
+    def worked(self):
+        steps, cos = self._cosine()
+        if cos < 0:
+            steps.append(rf"**The boundary case:** $N \cdot L = {_n4(cos)} < 0$, the light is "
+                         r"behind the surface. The clamp gives $\max(N \cdot L, 0) = 0$: the "
+                         r"point gets no direct light (without the clamp the light would "
+                         r"*remove* light).")
+        clamped = max(cos, 0.0)
+        value = self.kd * self.Il * clamped
+        steps.append(rf"$I_d = k_d\, I_l \max(N \cdot L, 0) = {_num(self.kd)} \cdot "
+                     rf"{_num(self.Il)} \cdot {_n4(clamped)} = {_n4(value)}$.")
+        return Worked(steps, value)
+
 
 def _rv(N, L, V):
     """R . V for unit N, L, V."""
@@ -146,31 +210,46 @@ def _rv(N, L, V):
     return float(R @ V)
 
 
-class SpecularTerm(DrawnExercise):
+#: The boundary case of the exercises where the viewer may see no highlight.
+AWAY = "viewer away from the mirror direction"
+
+
+class SpecularTerm(_Boundary, DrawnExercise):
     r"""The specular term :math:`I_s = k_s I_l \max(R \cdot V, 0)^n` of the Phong model.
 
-    Attributes: ``N``, ``L``, ``V`` (unit vectors), ``ks``, ``Il``, ``n`` (the exponent).
+    In the boundary variant (``boundary == "viewer away from the mirror direction"``, about
+    15 % of the seeds) :math:`R \cdot V < 0` and the answer is 0; otherwise ``boundary`` is
+    None and the viewer sees a clear highlight.
+
+    Attributes: ``N``, ``L``, ``V`` (unit vectors), ``ks``, ``Il``, ``n`` (the exponent),
+    ``boundary``.
 
     Examples
     --------
     >>> ex = SpecularTerm(seed=3)
-    >>> ex.check(ex.expected).status
-    'correct'
+    >>> ex.boundary, ex.check(ex.expected).status
+    (None, 'correct')
     >>> ex.check(ex.ks * ex.Il * (ex.N @ ex.L) ** ex.n).diagnosis
     'N·L instead of R·V'
+    >>> away = next(SpecularTerm(seed=s) for s in range(50) if SpecularTerm(seed=s).boundary)
+    >>> away.boundary, away.expected
+    ('viewer away from the mirror direction', 0.0)
     """
 
     title = "The specular term"
     answer_form = "number"
     what = "the specular intensity"
+    boundary_cases = (AWAY,)
+    #: With R . V < 0 these slips give the right answer, 0, as well.
+    may_coincide = ("no exponent", "exponent on the coefficient")
     advice = (r"Reflect first, $R = 2 (N \cdot L) N - L$, then $I_s = k_s\, I_l \max(R \cdot V, "
-            r"0)^n$: only the cosine is raised to the power $n$.")
+              r"0)^n$: only the cosine is raised to the power $n$.")
 
     def draw(self, rng):
         axis = int(rng.integers(3))
         self.N = _frame([0.0, 0.0, 1.0], axis)
         rv = _UP_RV                     # directions with a clear highlight, or clearly none
-        ok = (_UP_DOT < 0.99) & ((rv > 0.5) | ((rv > -0.9) & (rv < -0.3)))
+        ok = (_UP_DOT < 0.99) & (((rv > -0.9) & (rv < -0.3)) if self.boundary else (rv > 0.5))
         L, V = _pair(rng, _UP, _UP, ok)
         self.L, self.V = _frame(L, axis), _frame(V, axis)
         self.ks = float(pick(rng, (0.5, 0.6, 0.8)))
@@ -217,15 +296,58 @@ class SpecularTerm(DrawnExercise):
             r"specular term $I_s$ of the Phong model." "\n\n" + _ONE_NUMBER + "\n\n"
             + data_note("N", "L", "V", "ks", "Il", "n"))
 
+    def hints(self):
+        nl = float(self.N @ self.L)
+        R = 2 * nl * self.N - self.L
+        rv = float(R @ self.V)
+        if rv < 0:
+            third = (rf"$R \cdot V = {_frac(rv)}$ is negative: the viewer is more than "
+                     r"$90^\circ$ away from the mirror direction. What does the clamp make of "
+                     r"it, before the power?")
+        else:
+            third = (rf"$R \cdot V = {_frac(rv)}$: raise it (only it) to the power "
+                     rf"$n = {self.n}$, then scale by $k_s I_l = {_num(self.ks)} \cdot "
+                     rf"{_num(self.Il)}$.")
+        return [r"The specular term is $I_s = k_s\, I_l \max(R \cdot V, 0)^n$, where $R$ is the "
+                r"mirror direction of $L$ about the normal: $R = 2 (N \cdot L) N - L$.",
+                rf"Reflect first: $N \cdot L = {_frac(nl)}$, so "
+                rf"$R = {_frac(2 * nl)}\, N - L = {_vec(R)}$.", third]
 
-class PhongTotal(DrawnExercise):
+    def worked(self):
+        N, L, V = (np.asarray(x, dtype=float) for x in (self.N, self.L, self.V))
+        nl = float(N @ L)
+        R = 2 * nl * N - L
+        rv = float(R @ V)
+        steps = [rf"$N \cdot L = {_dot(N, L)}$.",
+                 rf"The mirror direction: $R = 2 (N \cdot L) N - L = {_frac(2 * nl)} \cdot "
+                 rf"{_vec(N)} - {_vec(L)} = {_vec(R)}$.",
+                 rf"$R \cdot V = {_dot(R, V)}$."]
+        clamped = max(rv, 0.0)
+        value = self.ks * self.Il * clamped ** self.n
+        if rv < 0:
+            steps.append(rf"**The boundary case:** $R \cdot V < 0$, the viewer is more than "
+                         r"$90^\circ$ from the mirror direction and sees no highlight: "
+                         r"$\max(R \cdot V, 0)^n = 0^n = 0$ (clamp *before* the power: an even "
+                         r"power would turn the negative cosine positive).")
+        else:
+            steps.append(rf"$\max(R \cdot V, 0)^n = {_n4(clamped)}^{{{self.n}}} = "
+                         rf"{_n4(clamped ** self.n)}$.")
+        steps.append(rf"$I_s = k_s\, I_l \max(R \cdot V, 0)^n = {_num(self.ks)} \cdot "
+                     rf"{_num(self.Il)} \cdot {_n4(clamped ** self.n)} = {_n4(value)}$.")
+        return Worked(steps, value)
+
+
+class PhongTotal(_Boundary, DrawnExercise):
     r"""The whole Phong intensity :math:`I = I_e + I_a k_a + k_d I_l \max(N \cdot L, 0)
     + k_s I_l \max(R \cdot V, 0)^n` for one grey light.
 
-    In some variants :math:`R \cdot V < 0` (no highlight) or the light is behind the surface
-    (neither diffuse nor specular light).
+    Two boundary variants, together in about 16 % of the seeds: ``boundary == "viewer away
+    from the mirror direction"`` (:math:`R \cdot V < 0`, no highlight) and ``boundary ==
+    "light behind the surface"`` (:math:`N \cdot L < 0`: neither diffuse nor specular
+    light); otherwise ``boundary`` is None and both light terms count.
 
-    Attributes: ``N``, ``L``, ``V``, ``Ie``, ``Ia``, ``ka``, ``kd``, ``ks``, ``n``, ``Il``.
+    Attributes: ``N``, ``L``, ``V``, ``Ie``, ``Ia``, ``ka``, ``kd``, ``ks``, ``n``, ``Il``,
+    ``boundary``.
 
     Examples
     --------
@@ -241,13 +363,14 @@ class PhongTotal(DrawnExercise):
     title = "The Phong illumination model"
     answer_form = "number"
     what = "the intensity"
+    boundary_cases = (AWAY, BEHIND)
+    boundary_share = 0.16
     advice = (r"Add the four terms: the emission $I_e$, the ambient $I_a k_a$, the diffuse "
-            r"$k_d I_l \max(N \cdot L, 0)$ and the specular $k_s I_l \max(R \cdot V, 0)^n$ "
-            r"with $R = 2 (N \cdot L) N - L$; both light terms are 0 when $N \cdot L \le 0$.")
+              r"$k_d I_l \max(N \cdot L, 0)$ and the specular $k_s I_l \max(R \cdot V, 0)^n$ "
+              r"with $R = 2 (N \cdot L) N - L$; both light terms are 0 when $N \cdot L \le 0$.")
 
     def draw(self, rng):
         axis = int(rng.integers(3))
-        self.case = str(pick(rng, ("lit",) * 5 + ("no highlight",) * 3 + ("behind",) * 2))
         self.N = _frame([0.0, 0.0, 1.0], axis)
         while True:                     # the case asked for, with a clear effect of each slip
             self.kd = float(pick(rng, (0.4, 0.5, 0.6)))
@@ -257,7 +380,7 @@ class PhongTotal(DrawnExercise):
             ok = self._clear_case()
             if ok.any():
                 break
-        first = _DOWN if self.case == "behind" else _UP
+        first = _DOWN if self.boundary == BEHIND else _UP
         L, V = _pair(rng, first, _UP, ok)
         self.L, self.V = _frame(L, axis), _frame(V, axis)
         while True:                     # ambient and emission of clearly different sizes
@@ -274,13 +397,14 @@ class PhongTotal(DrawnExercise):
 
     def _clear_case(self):
         """Which pairs (L from the rows, V from the columns of the table) fit the case."""
-        first = _DOWN if self.case == "behind" else _UP
-        rv = _DOWN_RV if self.case == "behind" else _UP_RV
+        behind = self.boundary == BEHIND
+        first = _DOWN if behind else _UP
+        rv = _DOWN_RV if behind else _UP_RV
         nl = first[:, 2, None] + 0 * rv
         highlight = self.ks * self.Il * np.abs(rv) ** self.n
-        if self.case == "lit":
+        if self.boundary is None:
             return (nl > 0.2) & (rv > 0.3)
-        if self.case == "no highlight":
+        if self.boundary == AWAY:
             return (nl > 0.2) & (rv < 0) & (highlight > 0.06)
         unclamped = self.Il * (self.kd * nl + self.ks * rv ** self.n)
         return ((nl < -0.2) & (rv > 0) & (highlight > 0.06) & (np.abs(unclamped) > 0.06)
@@ -328,19 +452,87 @@ class PhongTotal(DrawnExercise):
             r"at this point." "\n\n" + _ONE_NUMBER + "\n\n"
             + data_note("N", "L", "V", "Ie", "Ia", "ka", "kd", "ks", "n", "Il"))
 
+    def _terms(self):
+        """N . L, R, R . V, the constant part and the two light terms, as on paper."""
+        N, L, V = (np.asarray(x, dtype=float) for x in (self.N, self.L, self.V))
+        nl = float(N @ L)
+        R = 2 * nl * N - L
+        rv = float(R @ V)
+        constant = self.Ie + self.Ia * self.ka
+        diffuse = self.kd * self.Il * nl if nl > 0 else 0.0
+        specular = self.ks * self.Il * max(rv, 0.0) ** self.n if nl > 0 else 0.0
+        return nl, R, rv, constant, diffuse, specular
 
-class BlinnPhongHighlight(DrawnExercise):
+    def hints(self):
+        nl, R, rv, constant, diffuse, specular = self._terms()
+        if nl <= 0:
+            third = (rf"$N \cdot L = {_frac(nl)} < 0$: the light is behind the surface. Which "
+                     r"of the four terms are left?")
+        elif rv < 0:
+            third = (rf"$R = {_vec(R)}$ and $R \cdot V = {_frac(rv)} < 0$: what is the "
+                     rf"specular term then? The diffuse term is $I_d = {_n4(diffuse)}$.")
+        else:
+            third = (rf"$R = {_vec(R)}$ and $R \cdot V = {_frac(rv)}$: "
+                     rf"$I_d = {_n4(diffuse)}$ and $I_s = {_n4(specular)}$.")
+        return [r"Four terms add up: $I = I_e + I_a k_a + k_d I_l \max(N \cdot L, 0) + k_s I_l "
+                r"\max(R \cdot V, 0)^n$ with $R = 2 (N \cdot L) N - L$; both light terms are 0 "
+                r"when the light is behind the surface.",
+                rf"The terms that do not depend on the light: $I_e + I_a k_a = "
+                rf"{_num(self.Ie)} + {_num(self.Ia)} \cdot {_num(self.ka)} = {_num(constant)}$. "
+                rf"For the light terms, $N \cdot L = {_frac(nl)}$.", third]
+
+    def worked(self):
+        nl, R, rv, constant, diffuse, specular = self._terms()
+        steps = [rf"Emission and ambient: $I_e + I_a k_a = {_num(self.Ie)} + {_num(self.Ia)} "
+                 rf"\cdot {_num(self.ka)} = {_num(constant)}$.",
+                 rf"$N \cdot L = {_dot(self.N, self.L)}$."]
+        if nl <= 0:
+            steps.append(r"**The boundary case:** $N \cdot L < 0$, the light is behind the "
+                         r"surface: it adds neither diffuse nor specular light, "
+                         r"$I_d = I_s = 0$ (even though $R \cdot V = "
+                         rf"{_frac(rv)} > 0$ here: a highlight on the dark side would be "
+                         r"wrong).")
+        else:
+            steps += [rf"Diffuse: $I_d = k_d I_l\, (N \cdot L) = {_num(self.kd)} \cdot "
+                      rf"{_num(self.Il)} \cdot {_frac(nl)} = {_n4(diffuse)}$.",
+                      rf"Mirror direction: $R = 2 (N \cdot L) N - L = {_vec(R)}$, and "
+                      rf"$R \cdot V = {_dot(R, self.V)}$."]
+            if rv < 0:
+                steps.append(r"**The boundary case:** $R \cdot V < 0$, the viewer is more than "
+                             r"$90^\circ$ from the mirror direction: no highlight, "
+                             r"$I_s = k_s I_l \max(R \cdot V, 0)^n = 0$.")
+            else:
+                steps.append(rf"Specular: $I_s = k_s I_l\, (R \cdot V)^n = {_num(self.ks)} "
+                             rf"\cdot {_num(self.Il)} \cdot {_n4(rv)}^{{{self.n}}} = "
+                             rf"{_n4(specular)}$.")
+        total = constant + diffuse + specular
+        steps.append(rf"$I = {_num(constant)} + {_n4(diffuse)} + {_n4(specular)} = "
+                     rf"{_n4(total)}$.")
+        return Worked(steps, total)
+
+
+#: The boundary case of Blinn-Phong: the halfway vector points into the surface.
+BELOW = "halfway vector below the surface"
+#: L below the surface (rows), V above it (columns): L . V and N . H for N = +z.
+_DOWN_UP_DOT = _DOWN @ _UP.T
+_DOWN_UP_NH = (_DOWN[:, 2, None] + _UP[None, :, 2]) / np.sqrt(np.maximum(2 + 2 * _DOWN_UP_DOT,
+                                                                         1e-12))
+
+
+class BlinnPhongHighlight(_Boundary, DrawnExercise):
     r"""Blinn-Phong: the halfway vector :math:`H = (L + V)/\lVert L + V \rVert` and
-    :math:`(N \cdot H)^n`.
+    :math:`\max(N \cdot H, 0)^n`.
 
     The answer has two parts, the vector :math:`H` and the number :math:`s`; each is judged
-    against the slips anticipated for it.
+    against the slips anticipated for it. In the boundary variant (``boundary == "halfway
+    vector below the surface"``, about 15 % of the seeds) the light is behind the surface and
+    :math:`N \cdot H < 0`, so :math:`s = 0`; otherwise ``boundary`` is None.
 
-    Attributes: ``N``, ``L``, ``V`` (unit vectors), ``n`` (the exponent).
+    Attributes: ``N``, ``L``, ``V`` (unit vectors), ``n`` (the exponent), ``boundary``.
 
     Examples
     --------
-    >>> ex = BlinnPhongHighlight(seed=5)
+    >>> ex = BlinnPhongHighlight(seed=1)
     >>> ex.check(ex.expected).status
     'correct'
     >>> s = ex.L + ex.V
@@ -348,25 +540,39 @@ class BlinnPhongHighlight(DrawnExercise):
     'H not normalised'
     >>> ex.check([1, 2, 3, ...]).status, ex.check([1, 2]).status
     ('unanswered', 'invalid')
+    >>> below = next(BlinnPhongHighlight(seed=k) for k in range(50)
+    ...              if BlinnPhongHighlight(seed=k).boundary)
+    >>> below.boundary, float(below.expected[3])
+    ('halfway vector below the surface', 0.0)
     """
 
     title = "Blinn-Phong's halfway vector"
     answer_form = "custom"
+    boundary_cases = (BELOW,)
     advice = (r"$H = (L + V) / \lVert L + V \rVert$ is the unit vector half-way between $L$ "
-            r"and $V$; then $s = \max(N \cdot H, 0)^n$.")
+              r"and $V$; then $s = \max(N \cdot H, 0)^n$.")
 
     def draw(self, rng):
         axis = int(rng.integers(3))
         self.N = _frame([0.0, 0.0, 1.0], axis)
         self.n = int(pick(rng, (4, 5, 8, 10, 16, 20)))
-        ok = (_UP_DOT < 0.6) & (_UP_NH ** self.n > 0.1)    # L, V apart; a visible highlight
-        L, V = _pair(rng, _UP, _UP, ok)
+        if self.boundary:               # light from below, H clearly into the surface
+            first = _DOWN
+            ok = (_DOWN_UP_DOT > -0.6) & (_DOWN_UP_DOT < 0.6) & (_DOWN_UP_NH < -0.1)
+        else:                           # L, V apart; a visible highlight
+            first = _UP
+            ok = (_UP_DOT < 0.6) & (_UP_NH ** self.n > 0.1)
+        if not ok.any():
+            self.expected = None
+            return
+        L, V = _pair(rng, first, _UP, ok)
         self.L, self.V = _frame(L, axis), _frame(V, axis)
         H = shading.halfway(self.L, self.V)
-        light = shading.directional_light(self.L)
-        material = shading.Material(ka=0.0, kd=0.0, ks=1.0, shininess=self.n)
-        s = float(shading.blinn_phong(None, self.N, self.V, light, material).specular[0])
+        s = max(float(self.N @ H), 0.0) ** self.n
         self.expected = np.array([*H, s])
+
+    def acceptable(self):
+        return self.expected is not None
 
     def _groups(self):
         """(name, expected, mistakes) for the vector H and for the number s."""
@@ -381,14 +587,23 @@ class BlinnPhongHighlight(DrawnExercise):
                 r"the normal a mirror would need to send the light into the eye). "
                 r"$L - V$ is perpendicular to that bisector.")
         R = 2 * (N @ L) * N - L
-        values = [Mistake([float(N @ total) ** n], raw, "H not normalised"),
-                  Mistake([float(N @ total / 2) ** n], raw, "H not normalised"),
-                  Mistake([max(float(R @ V), 0.0) ** n], r"That is Phong's $(R \cdot V)^n$. "
-                          r"Blinn-Phong replaces it by $(N \cdot H)^n$, which needs no "
-                          r"reflected vector (and, with the same $n$, gives a wider "
-                          r"highlight).", "Phong's R·V")]
-        values += [Mistake([float(N @ (sign * d)) ** n], diff, "L - V") for sign in (1, -1)
-                   if float(N @ (sign * d)) > 0]
+        if self.boundary:
+            nh = float(N @ self.expected[:3])
+            even = (" (with an even exponent the power even turned it positive)"
+                    if n % 2 == 0 else "")
+            values = [Mistake([nh ** n], r"Here $N \cdot H < 0$: the halfway vector points "
+                              r"into the surface (the light is behind it), and there is no "
+                              r"highlight. Clamp before the power, $\max(N \cdot H, 0)^n = 0$"
+                              + even + ".", "no clamp")] if abs(nh) ** n > 0.06 else []
+        else:
+            values = [Mistake([float(N @ total) ** n], raw, "H not normalised"),
+                      Mistake([float(N @ total / 2) ** n], raw, "H not normalised"),
+                      Mistake([max(float(R @ V), 0.0) ** n], r"That is Phong's $(R \cdot V)^n$. "
+                              r"Blinn-Phong replaces it by $(N \cdot H)^n$, which needs no "
+                              r"reflected vector (and, with the same $n$, gives a wider "
+                              r"highlight).", "Phong's R·V")]
+            values += [Mistake([float(N @ (sign * d)) ** n], diff, "L - V") for sign in (1, -1)
+                       if float(N @ (sign * d)) > 0]
         return [("the halfway vector H", self.expected[:3],
                  [Mistake(total, raw, "H not normalised"),
                   Mistake(total / 2, raw, "H not normalised"),
@@ -440,6 +655,41 @@ class BlinnPhongHighlight(DrawnExercise):
             rf"$s = \max(N \cdot H, 0)^n$ for $n = {self.n}$." "\n\n"
             r"**Answer:** a list of 4 numbers `[Hx, Hy, Hz, s]`. " + DECIMALS + "\n\n"
             + data_note("N", "L", "V", "n"))
+
+    def hints(self):
+        total = self.L + self.V
+        H = total / np.linalg.norm(total)
+        nh = float(self.N @ H)
+        if nh < 0:
+            third = (rf"$H = {_vec(H)}$ and $N \cdot H = {_n4(nh)}$: negative, the halfway "
+                     r"vector points into the surface. What does the clamp give?")
+        else:
+            third = (rf"$H = {_vec(H)}$ and $N \cdot H = {_n4(nh)}$: raise it to the power "
+                     rf"$n = {self.n}$.")
+        return [r"The halfway vector is the **unit** bisector of $L$ and $V$: "
+                r"$H = (L + V)/\lVert L + V \rVert$; the highlight factor is then "
+                r"$s = \max(N \cdot H, 0)^n$ (no reflected vector needed).",
+                rf"$L + V = {_vec(total)}$, of length ${_length(total)}$.", third]
+
+    def worked(self):
+        N, L, V = (np.asarray(x, dtype=float) for x in (self.N, self.L, self.V))
+        total = L + V
+        length = float(np.sqrt(total @ total))
+        H = total / length
+        nh = float(N @ H)
+        steps = [rf"$L + V = {_vec(L)} + {_vec(V)} = {_vec(total)}$.",
+                 rf"Its length: $\lVert L + V \rVert = {_length(total)}$, so "
+                 rf"$H = (L + V) / {_n4(length)} = {_vec(H)}$.",
+                 rf"$N \cdot H = {_dot(N, H)}$."]
+        s = max(nh, 0.0) ** self.n
+        if nh < 0:
+            steps.append(r"**The boundary case:** $N \cdot H < 0$: the halfway vector points "
+                         r"into the surface, because the light is behind it ($N \cdot L = "
+                         rf"{_frac(N @ L)}$). The clamp gives $s = \max(N \cdot H, 0)^n = 0$: "
+                         r"no highlight.")
+        else:
+            steps.append(rf"$s = \max(N \cdot H, 0)^n = {_n4(nh)}^{{{self.n}}} = {_n4(s)}$.")
+        return Worked(steps, [*H, s])
 
 
 class DistanceAttenuation(DrawnExercise):
@@ -506,13 +756,45 @@ class DistanceAttenuation(DrawnExercise):
             rf"$f_{{att}}(d)\, I_l$, arrives at the surface point $P = {_vec(self.P)}$?" "\n\n"
             + _ONE_NUMBER + "\n\n" + data_note("P", "Q", "Il", "a", "b", "c"))
 
+    def _distance(self):
+        d = np.asarray(self.Q, dtype=float) - np.asarray(self.P, dtype=float)
+        return d, math.sqrt(float(d @ d))
 
-class SeveralLights(DrawnExercise):
+    def hints(self):
+        d, dist = self._distance()
+        a, b, c = self.a, self.b, self.c
+        denominator = a + b * dist + c * dist * dist
+        return [r"The light arriving is $f_{att}(d)\, I_l$ with "
+                r"$f_{att}(d) = 1/(a + b d + c d^2)$, where $d$ is the distance between the "
+                r"light and the surface point.",
+                rf"$Q - P = {_vec(d)}$, so $d = {_length(d)}$.",
+                rf"$a + b d + c d^2 = {_num(a)} + {_num(b)} \cdot {_num(dist)} + {_num(c)} \cdot "
+                rf"{_num(dist)}^2 = {_n4(denominator)}$; divide $I_l$ by it."]
+
+    def worked(self):
+        d, dist = self._distance()
+        denominator = self.a + self.b * dist + self.c * dist ** 2
+        f = 1 / denominator
+        value = self.Il * f
+        return Worked([
+            rf"The distance: $Q - P = {_vec(d)}$, $d = \lVert Q - P \rVert = {_length(d)}$.",
+            rf"$a + b d + c d^2 = {_num(self.a)} + {_num(self.b)} \cdot {_num(dist)} + "
+            rf"{_num(self.c)} \cdot {_num(dist ** 2)} = {_n4(denominator)}$, so "
+            rf"$f_{{att}}(d) = 1 / {_n4(denominator)} = {_n4(f)}$.",
+            rf"$f_{{att}}(d)\, I_l = {_n4(f)} \cdot {_num(self.Il)} = {_n4(value)}$.",
+        ], value)
+
+
+class SeveralLights(_Boundary, DrawnExercise):
     r"""A matte surface lit by several distant lights: :math:`I = I_a k_a + k_d \sum_l I_l
     \max(N \cdot L_l, 0)`.
 
+    In the boundary variant (``boundary == "light behind the surface"``, about 15 % of the
+    seeds) one of the lights (never the first) is behind the surface and adds nothing;
+    otherwise ``boundary`` is None and every light is in front.
+
     Attributes: ``N``, ``Ls`` (one unit vector per row), ``Is`` (their intensities), ``Ia``,
-    ``ka``, ``kd``.
+    ``ka``, ``kd``, ``boundary``.
 
     Examples
     --------
@@ -526,15 +808,16 @@ class SeveralLights(DrawnExercise):
     title = "Several lights"
     answer_form = "number"
     what = "the intensity"
+    boundary_cases = (BEHIND,)
     advice = (r"Each light adds its own diffuse term $k_d I_l \max(N \cdot L_l, 0)$; the ambient "
-            r"term $I_a k_a$ is added once.")
+              r"term $I_a k_a$ is added once.")
 
     def draw(self, rng):
         axis = int(rng.integers(3))
         m = int(pick(rng, (2, 3)))
         self.N = _frame([0.0, 0.0, 1.0], axis)
         ups = [1.0] * m
-        if rng.random() < 0.6:
+        if self.boundary:
             ups[int(rng.integers(1, m))] = -1.0
         self.Ls = np.array([_frame(_nice_unit(rng, up=u), axis) for u in ups])
         self.Is = np.array([float(pick(rng, (0.5, 1.0, 1.5, 2.0))) for _ in range(m)])
@@ -591,3 +874,46 @@ class SeveralLights(DrawnExercise):
             r"diffuse terms)." "\n\n" + _ONE_NUMBER + "\n\n"
             + data_note("N", "Ls", "Is", "Ia", "ka", "kd") + " (`.Ls[k]`, `.Is[k]` are light "
             "k + 1.)")
+
+    def _cosines(self):
+        return [float(np.asarray(L, dtype=float) @ np.asarray(self.N, dtype=float))
+                for L in self.Ls]
+
+    def hints(self):
+        cos = self._cosines()
+        listed = ", ".join(rf"$N \cdot L_{k + 1} = {_frac(c)}$" for k, c in enumerate(cos))
+        terms = [float(I) * max(c, 0.0) for I, c in zip(self.Is, cos)]
+        behind = [k + 1 for k, c in enumerate(cos) if c <= 0]
+        note = (f" (light {behind[0]} is behind the surface: what does it add?)" if behind
+                else "")
+        return [r"Light adds up: $I = I_a k_a + k_d \sum_l I_l \max(N \cdot L_l, 0)$. Each "
+                r"light brings its own diffuse term; the ambient term is added **once**.",
+                rf"The cosines: {listed}{note}.",
+                r"The lit sum is $\sum_l I_l \max(N \cdot L_l, 0) = "
+                + " + ".join(_n4(t) for t in terms) + rf" = {_n4(sum(terms))}$, and the ambient "
+                rf"term is $I_a k_a = {_num(self.Ia * self.ka)}$."]
+
+    def worked(self):
+        cos = self._cosines()
+        steps = []
+        terms = []
+        for k, (L, I, c) in enumerate(zip(self.Ls, self.Is, cos), 1):
+            term = float(I) * max(c, 0.0)
+            terms.append(term)
+            if c <= 0:
+                steps.append(rf"Light {k}: $N \cdot L_{k} = {_dot(self.N, L)} < 0$. **The "
+                             r"boundary case:** this light is behind the surface and adds "
+                             r"nothing, $\max(N \cdot L, 0) = 0$ (a negative term would "
+                             r"*remove* light).")
+            else:
+                steps.append(rf"Light {k}: $N \cdot L_{k} = {_dot(self.N, L)}$, so "
+                             rf"$I_{k} \max(N \cdot L_{k}, 0) = {_num(I)} \cdot {_frac(c)} = "
+                             rf"{_n4(term)}$.")
+        lit = sum(terms)
+        ambient = self.Ia * self.ka
+        value = ambient + self.kd * lit
+        steps.append(rf"The ambient term, once: $I_a k_a = {_num(self.Ia)} \cdot {_num(self.ka)}"
+                     rf" = {_num(ambient)}$.")
+        steps.append(rf"$I = I_a k_a + k_d \sum_l I_l \max(N \cdot L_l, 0) = {_num(ambient)} + "
+                     rf"{_num(self.kd)} \cdot {_n4(lit)} = {_n4(value)}$.")
+        return Worked(steps, value)

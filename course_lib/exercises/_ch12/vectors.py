@@ -6,8 +6,8 @@ Part of :mod:`course_lib.exercises.ch12`, which imports every exercise from here
 import numpy as np
 
 from ... import shading
-from ..core import DECIMALS, DrawnExercise, Mistake, data_note
-from . import _frame, _integer_vector, _nice_unit, _num, _vec
+from ..core import DECIMALS, DrawnExercise, Mistake, Worked, data_note
+from . import _dot, _frac, _frame, _integer_vector, _length, _nice_unit, _num, _vec
 
 __all__ = [
     "ReflectionVector",
@@ -88,3 +88,33 @@ class ReflectionVector(DrawnExercise):
             r"surface." "\n\n"
             r"**Answer:** the vector as a list of 3 numbers `[x, y, z]`. " + DECIMALS + "\n\n"
             + data_note("N", "L"))
+
+    def hints(self):
+        n = self.N / self._length
+        d = float(n @ self.L)
+        return [
+            r"The mirror image of $L$ about the normal is $R = 2 (\hat N \cdot L)\, \hat N - L$: "
+            r"twice the part of $L$ along the normal, minus $L$. The formula needs a **unit** "
+            r"normal $\hat N$.",
+            rf"$N$ is not of unit length: $\lVert N \rVert = {_length(self.N)}$, so "
+            rf"$\hat N = N / {_num(self._length)} = {_vec(n)}$.",
+            rf"Here $\hat N \cdot L = {_frac(d)}$, so $R = {_frac(2 * d)}\, \hat N - L$. "
+            r"Check your result: $R$ has length 1, and $\hat N \cdot R = \hat N \cdot L$.",
+        ]
+
+    def worked(self):
+        N, L = np.asarray(self.N, dtype=float), np.asarray(self.L, dtype=float)
+        length = float(np.sqrt(N @ N))
+        n = N / length
+        d = float(n @ L)
+        twice = 2 * d * n
+        R = twice - L
+        return Worked([
+            rf"Normalise the normal: $\lVert N \rVert = {_length(N)}$, so "
+            rf"$\hat N = N / {_num(length)} = {_vec(n)}$.",
+            rf"$\hat N \cdot L = {_dot(n, L)}$.",
+            rf"$2 (\hat N \cdot L)\, \hat N = {_frac(2 * d)} \cdot {_vec(n)} = {_vec(twice)}$.",
+            rf"$R = 2 (\hat N \cdot L)\, \hat N - L = {_vec(twice)} - {_vec(L)} = {_vec(R)}$. "
+            rf"Check: $\lVert R \rVert = {_num(np.sqrt(R @ R), 4)}$ and "
+            rf"$\hat N \cdot R = {_num(n @ R, 4)} = \hat N \cdot L$.",
+        ], R)

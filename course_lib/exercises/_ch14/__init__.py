@@ -13,6 +13,17 @@ from ..core import DECIMALS, DrawnExercise, PartsAnswer, latex_vector
 _num = fmt.number
 
 
+def _n4(x):
+    """A number of a worked step: 4 decimals, without trailing zeros."""
+    return fmt.number(x, 4)
+
+
+def _factor(x, decimals=4):
+    """A number inside a product or a sum, bracketed when negative."""
+    text = fmt.number(x, decimals)
+    return f"({text})" if text.startswith("-") else text
+
+
 _vec = functools.partial(latex_vector, max_denominator=1024)
 
 

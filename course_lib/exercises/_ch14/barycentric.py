@@ -6,8 +6,8 @@ Part of :mod:`course_lib.exercises.ch14`, which imports every exercise from here
 import numpy as np
 
 from ... import texturing
-from ..core import DECIMALS, Mistake, data_note, pick
-from . import _UV, _Chapter14, _num, _vec
+from ..core import DECIMALS, Mistake, Worked, data_note, pick
+from . import _UV, _Chapter14, _factor, _n4, _num, _vec
 
 __all__ = [
     "BarycentricCoordinates",
@@ -29,6 +29,40 @@ def _triangle(rng):
         A, B, C = rng.integers(0, 7, size=(3, 2)).astype(float)
         if abs(_area(A, B, C)) >= 4:
             return A, B, C
+
+
+def _area_steps(p, q, r, name):
+    r"""The signed area of p, q, r worked out: (LaTeX, value).
+
+    :math:`\tfrac12 [(q_x - p_x)(r_y - p_y) - (q_y - p_y)(r_x - p_x)]`.
+    """
+    a, b = q[0] - p[0], r[1] - p[1]
+    c, d = q[1] - p[1], r[0] - p[0]
+    value = 0.5 * (a * b - c * d)
+    return (rf"$A({name}) = \tfrac12 [{_factor(a)} \cdot {_factor(b)} - {_factor(c)} \cdot "
+            rf"{_factor(d)}] = {_num(value)}$"), value
+
+
+def _weights_steps(A, B, C, P):
+    """The barycentric coordinates of P by signed areas, worked out: (steps, weights)."""
+    A, B, C, P = (np.asarray(x, dtype=float) for x in (A, B, C, P))
+    total_text, total = _area_steps(A, B, C, "A, B, C")
+    texts, areas = [], []
+    for corners, name in (((P, B, C), "P, B, C"), ((A, P, C), "A, P, C"),
+                          ((A, B, P), "A, B, P")):
+        text, value = _area_steps(*corners, name)
+        texts.append(text)
+        areas.append(value)
+    weights = np.array(areas) / total
+    steps = [r"The whole triangle, with $A(P, Q, R) = \tfrac12 [(Q_x - P_x)(R_y - P_y) - "
+             rf"(Q_y - P_y)(R_x - P_x)]$: {total_text}.",
+             "Each corner's sub-triangle, with $P$ in that corner's place: "
+             + ", ".join(texts) + ".",
+             r"Divide by the whole area: $(\lambda_A, \lambda_B, \lambda_C) = ("
+             + r",\ ".join(f"{_num(a)}/{_factor(total)}" for a in areas) + ") = ("
+             + r",\ ".join(_n4(w) for w in weights) + rf")$; they add up to "
+             rf"{_n4(weights.sum())}."]
+    return steps, weights, areas, total
 
 
 _PERMUTATIONS = ((0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0))
@@ -99,6 +133,25 @@ class BarycentricCoordinates(_Chapter14):
             r"counter-clockwise). The point may lie outside the triangle." "\n\n"
             r"**Answer:** a list of 3 numbers `[lambda_A, lambda_B, lambda_C]`. " + DECIMALS
             + "\n\n" + data_note("A", "B", "C", "P"))
+
+    def hints(self):
+        steps, weights, areas, total = _weights_steps(self.A, self.B, self.C, self.P)
+        return [r"Each coordinate is a ratio of **signed** areas: $\lambda_A = A(P, B, C) / "
+                r"A(A, B, C)$, where $P$ takes the place of $A$ (and likewise for $B$ and "
+                r"$C$). A negative area, and weight, means $P$ lies beyond the opposite edge.",
+                rf"The whole triangle has the signed area $A(A, B, C) = {_num(total)}$.",
+                r"The three sub-triangles: $A(P, B, C) = " + _num(areas[0]) + "$, "
+                rf"$A(A, P, C) = {_num(areas[1])}$, $A(A, B, P) = {_num(areas[2])}$; divide "
+                r"each by the whole area."]
+
+    def worked(self):
+        steps, weights, _, _ = _weights_steps(self.A, self.B, self.C, self.P)
+        outside = [name for name, w in zip("ABC", weights) if w < 0]
+        if outside:
+            steps.append(r"A negative weight ($\lambda_" + r"$, $\lambda_".join(outside)
+                         + r"$) says that $P$ lies outside the triangle, beyond the edge "
+                         r"opposite that corner.")
+        return Worked(steps, weights)
 
 
 #: The whole-number points of [0, 6]^2.
@@ -181,6 +234,27 @@ class InterpolateColour(_Chapter14):
             + data_note("A", "B", "C", "P", "colours") + " (`.colours[k]` is the colour of "
             "corner A, B, C for k = 0, 1, 2.)")
 
+    def hints(self):
+        _, weights, _, _ = _weights_steps(self.A, self.B, self.C, self.P)
+        return [r"First the barycentric coordinates of $P$ (signed areas over the whole area), "
+                r"then blend the corners' colours with them, channel by channel: "
+                r"$c = \lambda_A c_A + \lambda_B c_B + \lambda_C c_C$.",
+                rf"The whole triangle has the signed area "
+                rf"$A(A, B, C) = {_num(_area(self.A, self.B, self.C))}$; each weight is a "
+                r"sub-triangle's area over it.",
+                r"$(\lambda_A, \lambda_B, \lambda_C) = ("
+                + r",\ ".join(_n4(w) for w in weights) + ")$."]
+
+    def worked(self):
+        steps, weights, _, _ = _weights_steps(self.A, self.B, self.C, self.P)
+        colours = np.asarray(self.colours, dtype=float)
+        colour = weights[0] * colours[0] + weights[1] * colours[1] + weights[2] * colours[2]
+        for k, channel in enumerate(("red", "green", "blue")):
+            products = " + ".join(rf"{_n4(w)} \cdot {_num(c[k])}"
+                                  for w, c in zip(weights, colours))
+            steps.append(rf"{channel.capitalize()}: ${products} = {_n4(colour[k])}$.")
+        return Worked(steps, colour)
+
 
 _SCREEN_WEIGHTS = ((0.5, 0.5, 0.0), (0.25, 0.25, 0.5), (0.5, 0.25, 0.25), (0.25, 0.5, 0.25),
                    (0.2, 0.3, 0.5), (0.6, 0.2, 0.2), (0.4, 0.4, 0.2), (0.5, 0.0, 0.5),
@@ -249,3 +323,34 @@ class PerspectiveCorrect(_Chapter14):
             r"Which texture coordinates $(u, v)$ does **perspective-correct** interpolation "
             r"give at the pixel?" "\n\n" + _UV + "\n\n" + data_note("weights", "w", "uv")
             + " (`.uv[k]` belongs to vertex k.)")
+
+    def hints(self):
+        lam, w = self.weights, self.w
+        over = lam / w
+        return [r"On the screen, $q/w$ and $1/w$ vary linearly, $q$ itself does not: "
+                r"interpolate $q/w$ and $1/w$ with the screen weights, then divide, "
+                r"$q = \frac{\sum_k \lambda_k q_k / w_k}{\sum_k \lambda_k / w_k}$.",
+                r"The weights over the depths: $\lambda_k / w_k = "
+                + r",\ ".join(f"{_num(a)}/{_num(b)}" for a, b in zip(lam, w)) + " = "
+                + r",\ ".join(_n4(x) for x in over) + "$.",
+                rf"$\sum_k \lambda_k / w_k = {_n4(over.sum())}$, and "
+                rf"$\sum_k \lambda_k q_k / w_k = {_vec(over @ self.uv)}$: divide."]
+
+    def worked(self):
+        lam, w = np.asarray(self.weights, dtype=float), np.asarray(self.w, dtype=float)
+        uv = np.asarray(self.uv, dtype=float)
+        over = [lam[k] / w[k] for k in range(3)]
+        one_over_w = over[0] + over[1] + over[2]
+        q_over_w = over[0] * uv[0] + over[1] * uv[1] + over[2] * uv[2]
+        q = q_over_w / one_over_w
+        return Worked([
+            r"Divide each screen weight by its vertex's $w$: $\lambda_k / w_k = "
+            + r",\ ".join(f"{_num(a)}/{_num(b)}" for a, b in zip(lam, w)) + " = "
+            + r",\ ".join(_n4(x) for x in over) + "$.",
+            rf"$1/w$ at the pixel: $\sum_k \lambda_k / w_k = {_n4(one_over_w)}$.",
+            r"$q/w$ at the pixel: $\sum_k (\lambda_k / w_k)\, q_k = "
+            + " + ".join(rf"{_n4(x)} \cdot {_vec(u)}" for x, u in zip(over, uv))
+            + rf" = {_vec(q_over_w)}$.",
+            rf"$q = \dfrac{{{_vec(q_over_w)}}}{{{_n4(one_over_w)}}} = "
+            rf"({_n4(q[0])},\ {_n4(q[1])})$.",
+        ], q)

@@ -8,8 +8,8 @@ import math
 import numpy as np
 
 from ... import texturing
-from ..core import Mistake, data_note, pick
-from . import _UV, _Chapter14, _num, _vec
+from ..core import Mistake, Worked, data_note, pick
+from . import _UV, _Chapter14, _factor, _n4, _num, _vec
 
 __all__ = [
     "CylindricalMap",
@@ -120,6 +120,41 @@ class SphericalMap(_Chapter14):
             r"texture coordinates of $P$." "\n\n" + _UV + "\n\n"
             + data_note("center", "P", "radius"))
 
+    def hints(self):
+        d = self.P - self.center
+        r = float(np.sqrt(d @ d))
+        theta = math.atan2(d[0], d[2])
+        phi = math.asin(d[1] / r)
+        return [r"Work relative to the centre, $d = P - C$: the azimuth "
+                r"$\theta = \operatorname{atan2}(d_x, d_z)$ goes around the pole axis $y$, the "
+                r"elevation $\varphi = \arcsin(d_y / r)$ from the equator up; then scale both "
+                r"to $[0, 1]$.",
+                rf"$d = {_vec(d)}$ and $r = \lVert d \rVert = {_num(r)}$.",
+                rf"$\theta = \operatorname{{atan2}}({_num(d[0])}, {_num(d[2])}) = {_n4(theta)}$ "
+                rf"and $\varphi = \arcsin({_num(d[1])}/{_num(r)}) = {_n4(phi)}$ (radians)."]
+
+    def worked(self):
+        d = np.asarray(self.P, dtype=float) - np.asarray(self.center, dtype=float)
+        r = math.sqrt(float(d @ d))
+        theta = math.atan2(d[0], d[2])
+        phi = math.asin(d[1] / r)
+        u = 0.5 + theta / (2 * math.pi)
+        v = 0.5 + phi / math.pi
+        quadrant = (r" ($d_z < 0$: atan2 puts the angle on the far side, beyond "
+                    r"$\pm\pi/2$, where $\tan^{-1}(d_x/d_z)$ would not)" if d[2] < 0 else "")
+        return Worked([
+            rf"Relative to the centre: $d = P - C = {_vec(d)}$, of length "
+            rf"$r = \sqrt{{{_num(d @ d)}}} = {_num(r)}$.",
+            rf"Azimuth: $\theta = \operatorname{{atan2}}(d_x, d_z) = "
+            rf"\operatorname{{atan2}}({_num(d[0])}, {_num(d[2])}) = {_n4(theta)}$" + quadrant
+            + ".",
+            rf"Elevation: $\varphi = \arcsin(d_y / r) = \arcsin({_num(d[1])}/{_num(r)}) = "
+            rf"{_n4(phi)}$.",
+            rf"$u = \tfrac12 + \theta / 2\pi = 0.5 + {_factor(theta)}/{_n4(2 * math.pi)} = "
+            rf"{_n4(u)}$ and $v = \tfrac12 + \varphi / \pi = 0.5 + {_factor(phi)}/"
+            rf"{_n4(math.pi)} = {_n4(v)}$.",
+        ], [u, v])
+
 
 class CylindricalMap(_Chapter14):
     r"""Cylindrical texture coordinates: :math:`u = \tfrac12 + \operatorname{atan2}(x, z)/2\pi`
@@ -191,6 +226,29 @@ class CylindricalMap(_Chapter14):
             r"around the axis, measured from $+z$ towards $+x$) and $v = d_y / h$ (the height "
             rf"along the axis). Compute the texture coordinates of $P = {_vec(self.P)}$." "\n\n"
             + _UV + "\n\n" + data_note("base", "height", "P"))
+
+    def hints(self):
+        d = self.P - self.base
+        theta = math.atan2(d[0], d[2])
+        return [r"Relative to the base centre, $d = P - C$: $u$ is the angle **around** the "
+                r"axis, $\tfrac12 + \operatorname{atan2}(d_x, d_z)/2\pi$, and $v$ the height "
+                r"**along** it as a fraction of the cylinder's height, $d_y / h$.",
+                rf"$d = P - C = {_vec(d)}$.",
+                rf"$\operatorname{{atan2}}({_num(d[0])}, {_num(d[2])}) = {_n4(theta)}$ radians, "
+                rf"and $d_y / h = {_num(d[1])}/{_num(self.height)}$."]
+
+    def worked(self):
+        d = np.asarray(self.P, dtype=float) - np.asarray(self.base, dtype=float)
+        theta = math.atan2(d[0], d[2])
+        u = 0.5 + theta / (2 * math.pi)
+        v = d[1] / self.height
+        return Worked([
+            rf"Relative to the base centre: $d = P - C = {_vec(d)}$.",
+            rf"Around the axis: $\theta = \operatorname{{atan2}}(d_x, d_z) = "
+            rf"\operatorname{{atan2}}({_num(d[0])}, {_num(d[2])}) = {_n4(theta)}$, so "
+            rf"$u = 0.5 + {_factor(theta)}/{_n4(2 * math.pi)} = {_n4(u)}$.",
+            rf"Along the axis: $v = d_y / h = {_num(d[1])}/{_num(self.height)} = {_n4(v)}$.",
+        ], [u, v])
 
 
 _AXIS_NAMES = {(1, 0, 0): "+x", (-1, 0, 0): "-x", (0, 1, 0): "+y", (0, -1, 0): "-y",
@@ -272,3 +330,33 @@ class PlanarMap(_Chapter14):
             r"$v = (P - O) \cdot e_v / s_v$. Compute the texture coordinates of "
             rf"$P = {_vec(self.P)}$." "\n\n" + _UV + "\n\n"
             + data_note("origin", "normal", "u_axis", "size", "P"))
+
+    def _axes(self):
+        n, e_u = np.asarray(self.normal, dtype=float), np.asarray(self.u_axis, dtype=float)
+        e_v = np.array([n[1] * e_u[2] - n[2] * e_u[1], n[2] * e_u[0] - n[0] * e_u[2],
+                        n[0] * e_u[1] - n[1] * e_u[0]]) + 0.0
+        return n, e_u, e_v
+
+    def hints(self):
+        _, e_u, e_v = self._axes()
+        d = self.P - self.origin
+        return [r"Measure $P$ from the origin, $d = P - O$, and project it onto the two texture "
+                r"axes: $u = d \cdot e_u / s_u$, $v = d \cdot e_v / s_v$, with "
+                r"$e_v = n \times e_u$ (in that order).",
+                rf"$e_v = n \times e_u = {_vec(self.normal)} \times {_vec(self.u_axis)} = "
+                rf"{_vec(e_v)}$.",
+                rf"$d = P - O = {_vec(d)}$: $d \cdot e_u = {_num(d @ e_u)}$ and "
+                rf"$d \cdot e_v = {_num(d @ e_v)}$; divide by the sizes."]
+
+    def worked(self):
+        n, e_u, e_v = self._axes()
+        d = np.asarray(self.P, dtype=float) - np.asarray(self.origin, dtype=float)
+        su, sv = (float(x) for x in self.size)
+        du, dv = float(d @ e_u), float(d @ e_v)
+        u, v = du / su, dv / sv
+        return Worked([
+            rf"The $v$ axis: $e_v = n \times e_u = {_vec(n)} \times {_vec(e_u)} = {_vec(e_v)}$.",
+            rf"From the origin: $d = P - O = {_vec(self.P)} - {_vec(self.origin)} = {_vec(d)}$.",
+            rf"$u = d \cdot e_u / s_u = {_num(du)}/{_num(su)} = {_n4(u)}$ and "
+            rf"$v = d \cdot e_v / s_v = {_num(dv)}/{_num(sv)} = {_n4(v)}$.",
+        ], [u, v])

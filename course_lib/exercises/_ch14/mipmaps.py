@@ -9,8 +9,8 @@ import math
 import numpy as np
 
 from ... import texturing
-from ..core import DECIMALS, Mistake, data_note, latex_fraction, pick
-from . import _Chapter14, _Parts, _vec
+from ..core import DECIMALS, Feedback, Mistake, Worked, data_note, latex_fraction, pick
+from . import _Chapter14, _n4, _num, _Parts, _vec
 
 __all__ = [
     "Checkerboard",
@@ -19,6 +19,12 @@ __all__ = [
 
 
 _frac = functools.partial(latex_fraction, max_denominator=1024)
+
+
+def _signed(x):
+    """A fraction of a product, bracketed when negative."""
+    text = _frac(x)
+    return f"({text})" if text.startswith("-") else text
 
 
 _TRIPLES = ((3, 4, 5), (4, 3, 5), (6, 8, 10), (8, 6, 10), (5, 12, 13), (12, 5, 13), (0, 4, 4),
@@ -31,7 +37,8 @@ class MipLevel(_Parts):
 
     :math:`\rho = \max\left(\sqrt{(W u_x)^2 + (H v_x)^2}, \sqrt{(W u_y)^2 + (H v_y)^2}\right)`
     from the derivatives of the texture coordinates along the screen's x and y; level
-    :math:`k` of a :math:`W \times H` texture is :math:`W/2^k \times H/2^k`.
+    :math:`k` of a :math:`W \times H` texture is :math:`W/2^k \times H/2^k`: whole numbers,
+    compared exactly (``64.0`` is 64, and 63 is wrong).
 
     Attributes: ``width``, ``height`` (W, H), ``du_dx``, ``dv_dx``, ``du_dy``, ``dv_dy``,
     ``k``.
@@ -44,6 +51,8 @@ class MipLevel(_Parts):
     >>> rho, lam, w, h = ex.expected
     >>> ex.check([rho, np.log(rho), w, h]).diagnosis
     'natural logarithm'
+    >>> ex.check([rho, lam, w + 1, h]).status, ex.check([rho, lam, float(w), h]).status
+    ('wrong', 'correct')
     """
 
     title = "Mipmap level and size"
@@ -74,6 +83,7 @@ class MipLevel(_Parts):
 
     def parts(self):
         rho, lam, w, h = self.expected
+        w, h = int(w), int(h)                 # whole numbers: compared exactly
         (a1, b1, c1), (a2, b2, c2) = self._steps
         k, W, H = self.k, self.width, self.height
         footprint = [
@@ -130,6 +140,42 @@ class MipLevel(_Parts):
             r"**Answer:** a list of 4 numbers `[rho, lambda, width_k, height_k]`. " + DECIMALS
             + "\n\n" + data_note("width", "height", "du_dx", "dv_dx", "du_dy", "dv_dy", "k"))
 
+    def _texel_steps(self):
+        W, H = self.width, self.height
+        x = (W * self.du_dx, H * self.dv_dx)
+        y = (W * self.du_dy, H * self.dv_dy)
+        return x, y, math.sqrt(x[0] ** 2 + x[1] ** 2), math.sqrt(y[0] ** 2 + y[1] ** 2)
+
+    def hints(self):
+        x, y, lx, ly = self._texel_steps()
+        return [r"Count in texels: one pixel step along $x$ moves $(W u_x, H v_x)$ texels, one "
+                r"along $y$ moves $(W u_y, H v_y)$. $\rho$ is the longer of the two steps, "
+                r"$\lambda = \log_2 \rho$, and each mipmap level halves both sides.",
+                rf"Here the steps are $({_num(x[0])}, {_num(x[1])})$ and "
+                rf"$({_num(y[0])}, {_num(y[1])})$ texels.",
+                rf"Their lengths are {_num(lx)} and {_num(ly)}; level $k = {self.k}$ of the "
+                rf"texture is ${self.width}/2^{{{self.k}}} \times {self.height}/2^{{{self.k}}}$."]
+
+    def worked(self):
+        x, y, lx, ly = self._texel_steps()
+        rho = max(lx, ly)
+        lam = math.log(rho) / math.log(2)
+        w, h = self.width // 2 ** self.k, self.height // 2 ** self.k
+        W, H = self.width, self.height
+        return Worked([
+            rf"Along $x$: $(W u_x, H v_x) = ({W} \cdot {_signed(self.du_dx)},\ {H} \cdot "
+            rf"{_signed(self.dv_dx)}) = ({_num(x[0])}, {_num(x[1])})$ texels, of length "
+            rf"$\sqrt{{{_num(x[0] ** 2 + x[1] ** 2)}}} = {_num(lx)}$.",
+            rf"Along $y$: $(W u_y, H v_y) = ({W} \cdot {_signed(self.du_dy)},\ {H} \cdot "
+            rf"{_signed(self.dv_dy)}) = ({_num(y[0])}, {_num(y[1])})$ texels, of length "
+            rf"$\sqrt{{{_num(y[0] ** 2 + y[1] ** 2)}}} = {_num(ly)}$.",
+            rf"The footprint is the longer step: $\rho = \max({_num(lx)}, {_num(ly)}) = "
+            rf"{_num(rho)}$.",
+            rf"The level: $\lambda = \log_2 \rho = \ln {_num(rho)} / \ln 2 = {_n4(lam)}$.",
+            rf"Level $k = {self.k}$: ${W}/2^{{{self.k}}} \times {H}/2^{{{self.k}}} = "
+            rf"{w} \times {h}$.",
+        ], [rho, lam, w, h])
+
 
 def _board_coordinate(rng, squares):
     """A coordinate p in [-1, 1] whose s p has the fractional part 0.2, 0.4, 0.6 or 0.8."""
@@ -137,36 +183,50 @@ def _board_coordinate(rng, squares):
     return (whole + float(pick(rng, (0.2, 0.4, 0.6, 0.8)))) / squares
 
 
+#: How many points the checkerboard is evaluated at.
+_BOARD_POINTS = 6
+
+
 class Checkerboard(_Chapter14):
     r"""A procedural checkerboard, :math:`T(P) = \left(\sum_k \lfloor s\, p_k \rfloor\right)
-    \bmod 2`, at four points (2D texture coordinates or a 3D solid texture).
+    \bmod 2`, at six points (2D texture coordinates or a 3D solid texture).
+
+    The values are whole numbers, 0 or 1, compared exactly (``1.0`` is 1); a wrong value is
+    named by its point.
 
     Attributes: ``squares`` (s), ``points`` (one point per row, 2 or 3 coordinates).
 
     Examples
     --------
     >>> ex = Checkerboard(seed=11)
-    >>> ex.check(ex.expected).status
-    'correct'
+    >>> ex.check(ex.expected).status, ex.check(ex.expected.astype(float)).status
+    ('correct', 'correct')
     >>> ex.check(np.floor(ex.points).sum(axis=1) % 2).diagnosis
     'squares ignored'
+    >>> flipped = ex.expected.copy()
+    >>> flipped[0] = 1 - flipped[0]
+    >>> ex.check(flipped).diagnosis
+    'components differ'
     """
 
     title = "A checkerboard texture"
     answer_form = "vector"
     what = "the list of values"
+    #: When every sum is 0 or 1 already, forgetting the modulo changes nothing.
+    may_coincide = ("no modulo",)
     advice = (r"For each point: multiply each coordinate by $s$, round **down** "
-            r"($\lfloor -0.4 \rfloor = -1$), add, and take the remainder modulo 2.")
+              r"($\lfloor -0.4 \rfloor = -1$), add, and take the remainder modulo 2.")
 
     def draw(self, rng):
         self.squares = int(pick(rng, (2, 4, 8)))
         dim = int(pick(rng, (2, 3)))
         self.points = np.array([[_board_coordinate(rng, self.squares) for _ in range(dim)]
-                                for _ in range(4)])
-        self.expected = texturing.checkerboard(self.points, squares=self.squares)
+                                for _ in range(_BOARD_POINTS)])
+        self.expected = np.round(texturing.checkerboard(self.points,
+                                                        squares=self.squares)).astype(int)
 
     def acceptable(self):
-        return 0 < self.expected.sum() < 4 and np.any(self.points < 0)
+        return 0 < self.expected.sum() < _BOARD_POINTS and np.any(self.points < 0)
 
     def mistakes(self):
         s, p = self.squares, self.points
@@ -182,7 +242,26 @@ class Checkerboard(_Chapter14):
             Mistake(np.floor(p).sum(axis=1) % 2, r"The scale $s$ is missing: with "
                     r"$\lfloor p \rfloor$ the squares are 1 unit wide. $s$ squares per unit "
                     r"means $\lfloor s\,p \rfloor$.", "squares ignored"),
+            Mistake(np.floor(s * p).sum(axis=1), r"These are the sums "
+                    r"$\sum_k \lfloor s\, p_k \rfloor$ themselves: the colour is their "
+                    r"remainder **modulo 2** (0 for an even sum, 1 for an odd one, also for a "
+                    r"negative sum: $-3 \bmod 2 = 1$).", "no modulo"),
         ]
+
+    def _judge(self, answer):
+        """Whole numbers are compared exactly; a wrong value is named by its point."""
+        feedback = super()._judge(answer)
+        if feedback.diagnosis not in ("off by one", "not whole"):
+            return feedback
+        value = np.ravel(np.asarray(answer, dtype=float))
+        off = [int(k) for k in np.flatnonzero(value != self.expected)]
+        if np.all(np.isin(value, (0, 1))):        # a colour off by one is the other colour
+            return Feedback("wrong", f"The values at the points {off} (counted from 0) should "
+                            "be the other colour.", "components differ")
+        return Feedback("wrong", r"Each value is 0 or 1: the remainder modulo 2 of the whole "
+                        r"number $\sum_k \lfloor s\, p_k \rfloor$ (nothing is averaged or "
+                        f"interpolated). Check the points {off} (counted from 0).",
+                        "not 0 or 1")
 
     def statement(self):
         dim = self.points.shape[1]
@@ -194,5 +273,30 @@ class Checkerboard(_Chapter14):
             r"length gives the point $P = (p_1, p_2, \dots)$ the value "
             r"$T(P) = \left(\sum_k \lfloor s\, p_k \rfloor\right) \bmod 2$ (0 or 1). Evaluate "
             rf"it at these {kind}:" "\n\n| point | coordinates |\n|---|---|\n" + rows + "\n\n"
-            r"**Answer:** a list of 4 numbers, each 0 or 1, in the order of the points." "\n\n"
-            + data_note("squares", "points"))
+            rf"**Answer:** a list of {_BOARD_POINTS} whole numbers, each 0 or 1, in the order "
+            r"of the points." "\n\n" + data_note("squares", "points"))
+
+    def hints(self):
+        s = self.squares
+        first = self.points[0]
+        scaled = s * first
+        floors = [math.floor(x) for x in scaled]
+        return [r"For each point: scale each coordinate by $s$, round it **down** to the number "
+                r"of its square, add those numbers, and keep the remainder modulo 2.",
+                r"Round down also for negative numbers: $\lfloor -0.4 \rfloor = -1$, not 0 "
+                r"(`int()` and rounding to the nearest are both wrong here).",
+                rf"Point 0: $s\,p = {_vec(scaled)}$, rounded down "
+                rf"${_vec(floors)}$, their sum ${sum(floors)}$, and ${sum(floors)} \bmod 2 = "
+                rf"{sum(floors) % 2}$. The other points likewise."]
+
+    def worked(self):
+        s = self.squares
+        steps, values = [], []
+        for k, p in enumerate(self.points):
+            floors = [math.floor(s * x) for x in p]
+            total = sum(floors)
+            values.append(total % 2)
+            steps.append(rf"Point {k}: $s\,p = {_vec(s * p)}$, "
+                         r"$\lfloor s\,p \rfloor = " + _vec(floors) + rf"$, sum ${total}$, "
+                         rf"${total} \bmod 2 = {total % 2}$.")
+        return Worked(steps, values)

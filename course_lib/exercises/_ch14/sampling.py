@@ -8,8 +8,8 @@ import math
 import numpy as np
 
 from ... import texturing
-from ..core import Mistake, data_note, pick
-from . import _ONE_NUMBER, _TEXELS, _Chapter14, _num, _Parts, _texture_table
+from ..core import Mistake, Worked, data_note, pick
+from . import _ONE_NUMBER, _TEXELS, _Chapter14, _factor, _n4, _num, _Parts, _texture_table
 
 __all__ = [
     "BilinearSample",
@@ -26,7 +26,8 @@ class NearestSample(_Chapter14):
     r"""Nearest-texel lookup in a 4 x 4 texture: :math:`T[\lfloor vH \rfloor, \lfloor uW
     \rfloor]`.
 
-    The texture's values are all different, so the value tells which texel was used.
+    The texture's values are 16 different whole numbers below 100, so the value tells which
+    texel was used.
 
     Attributes: ``texture`` (4 x 4, row 0 at v = 0), ``u``, ``v``.
 
@@ -49,7 +50,7 @@ class NearestSample(_Chapter14):
             r"the bottom row of the picture.")
 
     def draw(self, rng):
-        self.texture = rng.permutation(16).reshape(4, 4).astype(float)
+        self.texture = rng.choice(100, size=16, replace=False).reshape(4, 4).astype(float)
         self.u = float(pick(rng, _NEAREST_UV))
         self.v = float(pick(rng, _NEAREST_UV))
         self.expected = float(texturing.nearest_sample(self.texture, self.u, self.v))
@@ -81,6 +82,31 @@ class NearestSample(_Chapter14):
             rf"$(u, v) = ({_num(self.u)}, {_num(self.v)})$?" "\n\n"
             r"**Answer:** one number, the texel's value. `.texture[i, j]` is texel $(i, j)$."
             "\n\n" + data_note("texture", "u", "v"))
+
+    def hints(self):
+        uw, vh = self.u * 4, self.v * 4
+        j, i = math.floor(uw), math.floor(vh)
+        return [r"Nearest-texel sampling returns the texel that **contains** $(u, v)$: column "
+                r"$j = \lfloor uW \rfloor$, row $i = \lfloor vH \rfloor$ (round down).",
+                rf"$uW = {_num(self.u)} \cdot 4 = {_num(uw)}$ and $vH = {_num(self.v)} \cdot 4 = "
+                rf"{_num(vh)}$.",
+                rf"So $j = {j}$ and $i = {i}$. Row 0 is the **bottom** row of the picture: row "
+                rf"{i} is line {4 - i} of the table, counted from the top."]
+
+    def worked(self):
+        T = np.asarray(self.texture)
+        uw, vh = self.u * T.shape[1], self.v * T.shape[0]
+        j, i = math.floor(uw), math.floor(vh)
+        value = float(T[i, j])
+        return Worked([
+            rf"Column: $uW = {_num(self.u)} \cdot {T.shape[1]} = {_num(uw)}$, so "
+            rf"$j = \lfloor {_num(uw)} \rfloor = {j}$.",
+            rf"Row: $vH = {_num(self.v)} \cdot {T.shape[0]} = {_num(vh)}$, so "
+            rf"$i = \lfloor {_num(vh)} \rfloor = {i}$.",
+            rf"Texel $(i, j) = ({i}, {j})$: row {i} from the bottom (line {T.shape[0] - i} of the "
+            rf"table, which starts with the top row), column {j}: the value "
+            rf"${_num(value)}$.",
+        ], value)
 
 
 #: Coordinates whose array position u W - 1/2 (W = 4) lies strictly inside [0, 3], off-centre.
@@ -160,6 +186,48 @@ class BilinearSample(_Chapter14):
             rf"value at $(u, v) = ({_num(self.u)}, {_num(self.v)})$." "\n\n" + _ONE_NUMBER
             + " `.texture[i, j]` is texel $(i, j)$.\n\n" + data_note("texture", "u", "v"))
 
+    def _setup_numbers(self):
+        """x, y, j, i, alpha, beta as a student finds them."""
+        x, y = self.u * 4 - 0.5, self.v * 4 - 0.5
+        j, i = math.floor(x), math.floor(y)
+        return x, y, j, i, x - j, y - i
+
+    def hints(self):
+        x, y, j, i, a, b = self._setup_numbers()
+        T = self.texture
+        return [r"The values sit at the texel **centres**: go to texel units measured from the "
+                r"centres, $x = uW - \tfrac12$, $y = vH - \tfrac12$, and blend the four texels "
+                r"around $(x, y)$, first along a row, then between the rows.",
+                rf"Here $x = {_num(x)}$ and $y = {_num(y)}$: columns $j = {j}, {j + 1}$ with "
+                rf"the weight $\alpha = {_num(a)}$ towards column {j + 1}, rows "
+                rf"$i = {i}, {i + 1}$ with $\beta = {_num(b)}$ towards row {i + 1}.",
+                rf"The four texels: $t_{{{i},{j}}} = {_num(T[i, j])}$, "
+                rf"$t_{{{i},{j + 1}}} = {_num(T[i, j + 1])}$, $t_{{{i + 1},{j}}} = "
+                rf"{_num(T[i + 1, j])}$, $t_{{{i + 1},{j + 1}}} = {_num(T[i + 1, j + 1])}$ "
+                r"(rows counted from the bottom)."]
+
+    def worked(self):
+        x, y, j, i, a, b = self._setup_numbers()
+        T = np.asarray(self.texture, dtype=float)
+        low = (1 - a) * T[i, j] + a * T[i, j + 1]
+        high = (1 - a) * T[i + 1, j] + a * T[i + 1, j + 1]
+        value = (1 - b) * low + b * high
+        return Worked([
+            rf"In texel units from the centres: $x = uW - \tfrac12 = {_num(self.u)} \cdot 4 - "
+            rf"0.5 = {_num(x)}$, $y = vH - \tfrac12 = {_num(self.v)} \cdot 4 - 0.5 = "
+            rf"{_num(y)}$.",
+            rf"$j = \lfloor x \rfloor = {j}$, $\alpha = x - j = {_num(a)}$; "
+            rf"$i = \lfloor y \rfloor = {i}$, $\beta = y - i = {_num(b)}$.",
+            rf"Row {i}: $(1 - \alpha)\, t_{{{i},{j}}} + \alpha\, t_{{{i},{j + 1}}} = "
+            rf"{_num(1 - a)} \cdot {_num(T[i, j])} + {_num(a)} \cdot {_num(T[i, j + 1])} = "
+            rf"{_n4(low)}$.",
+            rf"Row {i + 1}: $(1 - \alpha)\, t_{{{i + 1},{j}}} + \alpha\, t_{{{i + 1},{j + 1}}} = "
+            rf"{_num(1 - a)} \cdot {_num(T[i + 1, j])} + {_num(a)} \cdot "
+            rf"{_num(T[i + 1, j + 1])} = {_n4(high)}$.",
+            rf"Between the rows: $(1 - \beta) \cdot {_n4(low)} + \beta \cdot {_n4(high)} = "
+            rf"{_num(1 - b)} \cdot {_n4(low)} + {_num(b)} \cdot {_n4(high)} = {_n4(value)}$.",
+        ], value)
+
 
 def _outside_u(rng, width):
     """A u outside [0, 1], a multiple of 0.05, with u W and frac(u) W not whole numbers."""
@@ -178,6 +246,9 @@ class WrapModes(_Parts):
     :math:`[0, W - 1]`; mirror: copy :math:`k = \lfloor u \rfloor`, the repeat column for even
     :math:`k`, mirrored (:math:`W - 1 - j`) for odd :math:`k`.
 
+    The three columns are whole numbers, compared exactly (``3.0`` is the column 3, and a
+    column one off is diagnosed as such).
+
     Attributes: ``width`` (W), ``u``.
 
     Examples
@@ -186,9 +257,11 @@ class WrapModes(_Parts):
     >>> ex.check(ex.expected).status
     'correct'
     >>> ex.u, ex.width, ex.expected
-    (-0.85, 8, array([1., 0., 6.]))
+    (-0.85, 8, array([1, 0, 6]))
     >>> ex.check([int(ex.u * ex.width) % ex.width, 0, 6]).diagnosis
     'truncated toward zero'
+    >>> ex.check([1.0, 0.0, 6.0]).status, ex.check([1, 1, 6]).diagnosis
+    ('correct', 'off by one')
     """
 
     title = "Wrap modes: repeat, clamp, mirror"
@@ -197,10 +270,11 @@ class WrapModes(_Parts):
             r"the way each mode says.")
 
     def draw(self, rng):
-        self.width = int(pick(rng, (4, 5, 8)))
+        self.width = int(pick(rng, (4, 5, 6, 8, 10)))
         self.u = _outside_u(rng, self.width)
         row = np.arange(self.width, dtype=float)[None, :]
-        self.expected = np.array([float(texturing.nearest_sample(row, self.u, 0.5, wrap=mode))
+        self.expected = np.array([round(float(texturing.nearest_sample(row, self.u, 0.5,
+                                                                       wrap=mode)))
                                   for mode in ("repeat", "clamp", "mirror")])
 
     def acceptable(self):
@@ -255,3 +329,45 @@ class WrapModes(_Parts):
             r"Which column $j$ does each mode use?" "\n\n"
             r"**Answer:** a list of 3 whole numbers `[j_repeat, j_clamp, j_mirror]`." "\n\n"
             + data_note("width", "u"))
+
+    def _steps(self):
+        """j0 = floor(u W), the copy k = floor(u), and the three columns."""
+        W = self.width
+        j0 = math.floor(self.u * W)
+        repeat = j0 - W * math.floor(j0 / W)
+        clamp = min(max(j0, 0), W - 1)
+        copy = math.floor(self.u)
+        mirror = W - 1 - repeat if copy % 2 else repeat
+        return j0, copy, repeat, clamp, mirror
+
+    def hints(self):
+        j0, copy, repeat, _, _ = self._steps()
+        W = self.width
+        parity = "odd: this copy is mirrored" if copy % 2 else "even: this copy is not mirrored"
+        return [r"First find the texel index the coordinate falls in, "
+                r"$j_0 = \lfloor uW \rfloor$ (round **down**, also for a negative $u$); then "
+                r"each mode brings $j_0$ into $0, \dots, W - 1$ in its own way.",
+                rf"$uW = {_num(self.u)} \cdot {W} = {_num(self.u * W)}$, so "
+                rf"$j_0 = {j0}$.",
+                rf"Repeat: ${j0} \bmod {W} = {repeat}$ (the remainder is never negative). "
+                rf"Mirror: copy $k = \lfloor u \rfloor = {copy}$ is {parity}."]
+
+    def worked(self):
+        j0, copy, repeat, clamp, mirror = self._steps()
+        W = self.width
+        if copy % 2:
+            mirrored = (rf"$k = {copy}$ is odd, so this copy is mirrored: "
+                        rf"$W - 1 - {repeat} = {mirror}$.")
+        else:
+            mirrored = (rf"$k = {copy}$ is even, so this copy is not mirrored: the repeat "
+                        rf"column, {mirror}.")
+        edge = "0 (the first column)" if j0 < 0 else f"{W - 1} (the last column)"
+        return Worked([
+            rf"The texel index: $uW = {_num(self.u)} \cdot {W} = {_num(self.u * W)}$, "
+            rf"$j_0 = \lfloor {_num(self.u * W)} \rfloor = {j0}$.",
+            rf"Repeat: $j_0 \bmod W = {j0} - {W} \cdot {_factor(math.floor(j0 / W), 0)} = "
+            rf"{repeat}$ (subtract the multiple of $W$ that leaves a remainder in "
+            rf"$0, \dots, {W - 1}$).",
+            rf"Clamp: $j_0 = {j0}$ lies beyond the edge, so the edge texel is used: {edge}.",
+            rf"Mirror: the copy is $k = \lfloor u \rfloor = {copy}$. " + mirrored,
+        ], [repeat, clamp, mirror])
