@@ -6,7 +6,7 @@ opacity transfer function for a band of values; look a value up in a colour map;
 perceived lightness :math:`L^*` of a colour; tell from their lightness curves which colour maps
 can show an ordered quantity; and choose the kind of colour map (sequential, diverging,
 qualitative) that a kind of data needs. The ``seed`` draws numbers that work out by hand: whole
-data ranges, parameters that fall on quarters of a colour-map interval, colour components in
+data ranges, values that fall on fifths or quarters of a colour-map interval, colour components in
 steps of 0.2.
 
 The expected answers come from :mod:`course_lib.colormaps`. Each exercise names the slips it
@@ -26,8 +26,8 @@ import numpy as np
 
 from .. import colormaps as cm
 from .. import format as fmt
-from .core import (ATOL, DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, data_note,
-                   has_placeholder, pick, read_floats, read_names)
+from .core import (DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, Worked, agrees,
+                   data_note, has_placeholder, pick, read_floats, read_names)
 
 __all__ = [
     "EXERCISES",
@@ -46,6 +46,11 @@ __all__ = [
 
 _num = fmt.number
 _vec = fmt.vector_latex
+
+
+def _paren(x):
+    """A number for a formula: in parentheses when it is negative (``v - (-10)``)."""
+    return f"({_num(x)})" if x < 0 else _num(x)
 
 
 def _values_words(values):
@@ -128,6 +133,34 @@ class NormalizeValues(_Chapter10):
                     r"by $b - a$.", "ranges swapped"),
         ]
 
+    def hints(self):
+        (a, b), (c, d), v = self.in_range, self.out_range, self.values
+        scale = (d - c) / (b - a)
+        t0 = (v[0] - a) / (b - a)
+        return [
+            r"Map in two stages: first onto $[0, 1]$ with $\frac{v - a}{b - a}$, then onto "
+            r"$[c, d]$: stretch by $d - c$ and shift by $c$.",
+            rf"Here $b - a = {_num(b - a)}$ and $d - c = {_num(d - c)}$, so each value becomes "
+            rf"$(v - {_paren(a)}) \cdot \frac{{{_num(d - c)}}}{{{_num(b - a)}}} + {_paren(c)}$, "
+            rf"a factor of ${_num(scale, 4)}$.",
+            rf"The first value: $\frac{{{_num(v[0])} - {_paren(a)}}}{{{_num(b - a)}}} = "
+            rf"{_num(t0, 4)}$, then ${_num(t0, 4)} \cdot {_num(d - c)} + {_paren(c)} = "
+            rf"{_num(t0 * (d - c) + c, 4)}$.",
+        ]
+
+    def worked(self):
+        (a, b), (c, d), v = self.in_range, self.out_range, self.values
+        steps = [rf"The widths: $b - a = {_num(b)} - {_paren(a)} = {_num(b - a)}$ and "
+                 rf"$d - c = {_num(d)} - {_paren(c)} = {_num(d - c)}$."]
+        out = []
+        for x in v:
+            t = (x - a) / (b - a)
+            out.append(t * (d - c) + c)
+            steps.append(rf"$v = {_num(x)}$: $\frac{{{_num(x)} - {_paren(a)}}}{{{_num(b - a)}}} "
+                         rf"= {_num(t, 4)}$, and ${_num(t, 4)} \cdot {_num(d - c)} + "
+                         rf"{_paren(c)} = {_num(out[-1], 4)}$.")
+        return Worked(steps, np.array(out))
+
     def statement(self):
         (a, b), (c, d) = self.in_range, self.out_range
         return (
@@ -137,6 +170,12 @@ class NormalizeValues(_Chapter10):
             + _values_words(self.values) + ".\n\n"
             r"**Answer:** a list of the 4 normalised values, in the order given. " + DECIMALS
             + "\n\n" + data_note("values", "in_range", "out_range"))
+
+
+#: Where the displayed value sits in its range: fractions that give pleasant numbers (for the
+#: grey levels 0..255: whole levels, multiples of 17).
+_FRACTIONS = (0.125, 0.2, 0.25, 0.375, 0.4, 0.6, 0.625, 0.75, 0.8, 0.875)
+_GREY_FRACTIONS = (0.2, 1 / 3, 0.4, 0.6, 2 / 3, 0.8)
 
 
 class Denormalize(_Chapter10):
@@ -168,8 +207,7 @@ class Denormalize(_Chapter10):
         a, b = pick(rng, _IN_RANGES)
         c, d = pick(rng, _OUT_RANGES)
         self.in_range, self.out_range = (float(a), float(b)), (float(c), float(d))
-        t = float(pick(rng, (0.2, 0.4, 0.6, 0.8) if d == 255 else (0.125, 0.25, 0.375, 0.625,
-                                                                   0.75, 0.875)))
+        t = float(pick(rng, _GREY_FRACTIONS if d == 255 else _FRACTIONS))
         self.g = c + t * (d - c)
         self.expected = a + t * (b - a)
 
@@ -191,6 +229,31 @@ class Denormalize(_Chapter10):
                                  r"grey levels. The levels run from 0 to 255, so the range has "
                                  r"width $d - c = 255$.", "256 levels"))
         return found
+
+    def hints(self):
+        (a, b), (c, d), g = self.in_range, self.out_range, self.g
+        return [
+            r"Undo the normalisation: solve $g = \frac{v - a}{b - a}(d - c) + c$ for $v$, doing "
+            r"its steps backwards (subtract $c$, divide by $d - c$, multiply by $b - a$, add "
+            r"$a$).",
+            r"That gives $v = a + \frac{g - c}{d - c}\,(b - a)$: the fraction of the way up the "
+            r"display range is the same fraction of the way up the data range.",
+            rf"Here $\frac{{g - c}}{{d - c}} = \frac{{{_num(g)} - {_paren(c)}}}{{{_num(d - c)}}} "
+            rf"= {_num((g - c) / (d - c), 4)}$ and $b - a = {_num(b - a)}$.",
+        ]
+
+    def worked(self):
+        (a, b), (c, d), g = self.in_range, self.out_range, self.g
+        fraction = (g - c) / (d - c)
+        v = a + fraction * (b - a)
+        return Worked([
+            r"Solve $g = \frac{v - a}{b - a}(d - c) + c$ for $v$: "
+            r"$v = a + \frac{g - c}{d - c}\,(b - a)$.",
+            rf"The fraction of the display range: $\frac{{{_num(g)} - {_paren(c)}}}"
+            rf"{{{_num(d)} - {_paren(c)}}} = {_num(fraction, 4)}$.",
+            rf"The same fraction of the data range, from $a$: $v = {_num(a)} + "
+            rf"{_num(fraction, 4)} \cdot {_num(b - a)} = {_num(v, 4)}$.",
+        ], v)
 
     def statement(self):
         (a, b), (c, d) = self.in_range, self.out_range
@@ -290,6 +353,47 @@ class TransferValues(_Chapter10):
                     r"find the segment $[s_i, s_{i+1}]$ that holds the scalar.", "ends only"),
         ]
 
+    def _steps(self):
+        """For each sample: (the words of its evaluation, the value)."""
+        p, v = self.points, self.values
+        found = []
+        for s in self.samples:
+            if s <= p[0] or s >= p[-1]:
+                end = 0 if s <= p[0] else len(p) - 1
+                side = "below the first" if end == 0 else "above the last"
+                found.append((rf"$s = {_num(s)}$ lies {side} control point: the end value "
+                              rf"$f = {_num(v[end])}$ holds.", float(v[end])))
+                continue
+            i = max(j for j in range(len(p) - 1) if p[j] <= s)
+            frac = (s - p[i]) / (p[i + 1] - p[i])
+            value = v[i] + frac * (v[i + 1] - v[i])
+            found.append((rf"$s = {_num(s)}$ lies in $[{_num(p[i])}, {_num(p[i + 1])}]$: "
+                          rf"$\frac{{{_num(s)} - {_num(p[i])}}}{{{_num(p[i + 1] - p[i])}}} = "
+                          rf"{_num(frac, 4)}$ of the way, so $f = {_num(v[i])} + {_num(frac, 4)} "
+                          rf"\cdot ({_num(v[i + 1] - v[i])}) = {_num(value, 4)}$.", value))
+        return found
+
+    def hints(self):
+        p = self.points
+        steps = self._steps()
+        inside = [text for s, (text, _) in zip(self.samples, steps) if p[0] < s < p[-1]]
+        outside = [s for s in self.samples if s < p[0] or s > p[-1]]
+        return [
+            r"The function is linear between neighbouring control points and keeps the end "
+            r"values outside them (it is clamped, not extended).",
+            r"For each scalar find the two control points around it, $s_i \le s \le s_{i+1}$, and "
+            r"interpolate: $f(s) = f_i + \frac{s - s_i}{s_{i+1} - s_i}\,(f_{i+1} - f_i)$.",
+            "For example " + inside[0] + rf" And $s = {_num(outside[0])}$ lies outside "
+            rf"$[{_num(p[0])}, {_num(p[-1])}]$.",
+        ]
+
+    def worked(self):
+        steps = self._steps()
+        return Worked([text for text, _ in steps]
+                      + ["The intensities, in the order of the scalars: "
+                         + ", ".join(f"${_num(x, 4)}$" for _, x in steps) + "."],
+                      np.array([x for _, x in steps]))
+
     def statement(self):
         return (
             r"An intensity transfer function $f$ is given by its control points (linear in "
@@ -349,6 +453,40 @@ class ThresholdBands(_Chapter10):
                     r"A step function is constant on each band and jumps at the thresholds.",
                     "interpolated"),
         ]
+
+    def _band(self, s):
+        """The index i of the band [s_i, s_{i+1}) of scalar s (0 below the first threshold)."""
+        below = [j for j, q in enumerate(self.points) if q <= s]
+        return below[-1] if below else 0
+
+    def hints(self):
+        p, v = self.points, self.values
+        on = [s for s in self.samples if s in set(p)][0]
+        j = self._band(on)
+        return [
+            r"A step function does not interpolate: it is constant on each band and jumps at "
+            r"the thresholds.",
+            r"For each scalar find the band $s_i \le s < s_{i+1}$: the last threshold at or below "
+            r"it. Below the first threshold the value is $v_0$; a scalar exactly on a threshold "
+            r"belongs to the band **above** it.",
+            rf"Here $s = {_num(on)}$ is exactly the threshold $s_{j}$: it gets "
+            rf"$v_{j} = {_num(v[j])}$, not $v_{j - 1} = {_num(v[j - 1])}$.",
+        ]
+
+    def worked(self):
+        p, v = self.points, self.values
+        steps, out = [], []
+        for s in self.samples:
+            i = self._band(s)
+            out.append(float(v[i]))
+            if s < p[0]:
+                where = rf"below the first threshold ${_num(p[0])}$"
+            elif i == len(p) - 1:
+                where = rf"at or above the last threshold $s_{i} = {_num(p[i])}$"
+            else:
+                where = rf"in $[s_{i}, s_{i + 1}) = [{_num(p[i])}, {_num(p[i + 1])})$"
+            steps.append(rf"$s = {_num(s)}$ lies {where}: $f = v_{i} = {_num(v[i])}$.")
+        return Worked(steps, np.array(out))
 
     def statement(self):
         return (
@@ -457,11 +595,11 @@ class DesignOpacity(_Chapter10):
         if isinstance(tf, Feedback):
             return tf
         got = tf(self.grid)
-        if np.allclose(got, self.expected, atol=ATOL):
+        if agrees(got, self.expected):              # the course's policy, at every grid point
             return Feedback("correct", "Your transfer function is right: it shows the band "
                             "with the asked opacity and fades out over the ramps.")
         for mistake in self._mistakes:
-            if np.allclose(got, mistake.value, atol=ATOL):
+            if agrees(got, mistake.value):
                 return Feedback("wrong", mistake.explanation, mistake.key)
         k = int(np.argmax(np.abs(got - self.expected)))
         return Feedback(
@@ -470,6 +608,28 @@ class DesignOpacity(_Chapter10):
             r"function first: 0 up to $l - w$, rising linearly to $\alpha$ at $l$, flat until "
             r"$h$, falling to 0 at $h + w$; its control points are the four corners.",
             "function differs")
+
+    def hints(self):
+        lo, hi, w, a = self.low, self.high, self.width, self.alpha
+        return [
+            r"Sketch the function first: 0, a ramp up, flat at $\alpha$ over the band, a ramp "
+            r"down, 0 again. Its control points are the four corners of that shape.",
+            r"The band itself must be fully at $\alpha$, so the ramps lie **outside** it: "
+            r"from $l - w$ up to $l$, and from $h$ down to $h + w$.",
+            rf"Here the first corner is $(l - w, 0) = ({_num(lo - w)}, 0)$, and the flat top "
+            rf"runs from $s = {_num(lo)}$ to $s = {_num(hi)}$ at opacity ${_num(a)}$.",
+        ]
+
+    def worked(self):
+        lo, hi, w, a = self.low, self.high, self.width, self.alpha
+        points = [(lo - w, 0.0), (lo, a), (hi, a), (hi + w, 0.0)]
+        return Worked([
+            rf"Transparent up to $l - w = {_num(lo)} - {_num(w)} = {_num(lo - w)}$: the control "
+            rf"point $({_num(lo - w)}, 0)$ (the function keeps 0 below it).",
+            rf"A linear ramp up to the band's start: $({_num(lo)}, {_num(a)})$; flat at "
+            rf"$\alpha = {_num(a)}$ to its end: $({_num(hi)}, {_num(a)})$.",
+            rf"A ramp down to $h + w = {_num(hi + w)}$: $({_num(hi + w)}, 0)$, and 0 above it.",
+        ], points)
 
     def statement(self):
         lo, hi, w = self.low, self.high, self.width
@@ -532,11 +692,12 @@ class ColormapLookup(_Chapter10):
         self.colors = _SMALL_MAPS[self.name]
         n = len(self.colors)
         a = float(pick(rng, (-20, 0, 10, 50)))
-        span = float((n - 1) * 4 * pick(rng, (1, 2, 5, 10)))
+        span = float((n - 1) * pick(rng, (20, 40, 100, 200)))
         self.in_range = (a, a + span)
         k = int(rng.integers(0, n - 1))
-        f = float(pick(rng, (0.25, 0.5, 0.75)))
-        self.value = a + (k + f) / (n - 1) * span
+        f = float(pick(rng, (0.2, 0.25, 0.4, 0.5, 0.6, 0.75, 0.8)))
+        step = span / (n - 1)                        # the data range of one interval
+        self.value = a + k * step + float(round(f * step))      # a whole number
         self.expected = cm.apply_colormap(self.value, self.colors, in_range=self.in_range)
 
     def mistakes(self):
@@ -558,6 +719,43 @@ class ColormapLookup(_Chapter10):
                     r"You normalised by $v / b$ and forgot to subtract $a$: $t = "
                     r"\frac{v - a}{b - a}$.", "forgot a"),
         ]
+
+    def _position(self):
+        (a, b), n = self.in_range, len(self.colors)
+        t = (self.value - a) / (b - a)
+        p = t * (n - 1)
+        k = min(int(np.floor(p)), n - 2)
+        return t, p, k, p - k
+
+    def hints(self):
+        (a, b), n = self.in_range, len(self.colors)
+        t, p, k, f = self._position()
+        return [
+            r"Two steps: normalise the value onto the map's parameter, "
+            r"$t = \frac{v - a}{b - a} \in [0, 1]$; then find where $t$ falls between the "
+            r"control colours.",
+            rf"With $n = {n}$ control colours at $t_k = \frac{{k}}{{{n - 1}}}$, the position is "
+            r"$p = t\,(n - 1)$: it lies between $C_k$ and $C_{k+1}$ with $k = \lfloor p \rfloor$, "
+            r"a fraction $f = p - k$ of the way; mix $(1 - f)\,C_k + f\,C_{k+1}$.",
+            rf"Here $t = \frac{{{_num(self.value)} - {_paren(a)}}}{{{_num(b - a)}}} = "
+            rf"{_num(t, 4)}$ and $p = {_num(t, 4)} \cdot {n - 1} = {_num(p, 4)}$: between "
+            rf"$C_{k} = {_vec(self.colors[k])}$ and $C_{k + 1} = {_vec(self.colors[k + 1])}$, "
+            rf"$f = {_num(f, 4)}$.",
+        ]
+
+    def worked(self):
+        (a, b), n = self.in_range, len(self.colors)
+        t, p, k, f = self._position()
+        c0, c1 = self.colors[k], self.colors[k + 1]
+        colour = (1 - f) * c0 + f * c1
+        return Worked([
+            rf"Normalise: $t = \frac{{{_num(self.value)} - {_paren(a)}}}{{{_num(b)} - "
+            rf"{_paren(a)}}} = {_num(t, 4)}$.",
+            rf"The position among the {n} control colours: $p = t\,(n - 1) = {_num(t, 4)} \cdot "
+            rf"{n - 1} = {_num(p, 4)}$, so $k = {k}$ and $f = {_num(f, 4)}$.",
+            rf"Mix channel by channel: $(1 - f)\,C_{k} + f\,C_{k + 1} = {_num(1 - f, 4)}\,"
+            rf"{_vec(c0)} + {_num(f, 4)}\,{_vec(c1)} = {_vec(colour)}$.",
+        ], colour)
 
     def statement(self):
         names = ", ".join(f"$C_{k} = {_vec(c)}$ ({_COLOUR_NAMES[tuple(int(x) for x in c)]})"
@@ -635,6 +833,41 @@ class LightnessOfColour(_Chapter10):
             Mistake(116 * np.cbrt(y), r"You forgot the $-16$: $L^* = 116\,Y^{1/3} - 16$, so "
                     r"that black has $L^* = 0$ and white $L^* = 100$.", "forgot 16"),
         ]
+
+    def _linear(self):
+        """The linear channels, each by the sRGB formula."""
+        return np.array([c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+                         for c in self.rgb])
+
+    def hints(self):
+        lin = self._linear()
+        y = 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2]
+        c = int(np.argmax(self.rgb))                     # the brightest channel, as an example
+        name = ("red", "green", "blue")[c]
+        return [
+            r"Three steps: undo the gamma encoding of each channel, weigh the linear channels "
+            r"into the relative luminance $Y$, and compress $Y$ into $L^*$.",
+            rf"The linear channels here are $(R, G, B)_{{lin}} = {_vec(lin, 4)}$ (for example "
+            rf"$\left(\frac{{{_num(self.rgb[c])} + 0.055}}{{1.055}}\right)^{{2.4}} = "
+            rf"{_num(lin[c], 4)}$ for {name}).",
+            rf"$Y = 0.2126 \cdot {_num(lin[0], 4)} + 0.7152 \cdot {_num(lin[1], 4)} + 0.0722 "
+            rf"\cdot {_num(lin[2], 4)} = {_num(y, 4)}$; now $L^* = 116\,Y^{{1/3}} - 16$.",
+        ]
+
+    def worked(self):
+        lin = self._linear()
+        y = 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2]
+        lightness = 116 * y ** (1 / 3) - 16
+        return Worked([
+            rf"Linearise each channel of ${_vec(self.rgb)}$: "
+            + ", ".join(rf"${_num(c)} \to {_num(x, 4)}$" for c, x in zip(self.rgb, lin))
+            + r" (with $c_{lin} = \left(\frac{c + 0.055}{1.055}\right)^{2.4}$, or $c / 12.92$ "
+            r"for small $c$).",
+            rf"The relative luminance: $Y = 0.2126 \cdot {_num(lin[0], 4)} + 0.7152 \cdot "
+            rf"{_num(lin[1], 4)} + 0.0722 \cdot {_num(lin[2], 4)} = {_num(y, 4)}$.",
+            rf"The lightness: $L^* = 116 \cdot {_num(y, 4)}^{{1/3}} - 16 = 116 \cdot "
+            rf"{_num(y ** (1 / 3), 4)} - 16 = {_num(lightness, 2)}$.",
+        ], lightness)
 
     def statement(self):
         return (
@@ -721,6 +954,27 @@ class MonotonicMaps(_Chapter10):
                      "meaningful centre, not for a plain ordered quantity.")
         return text
 
+    def hints(self):
+        first = self.maps[0]
+        return [
+            r"Ordered data need a lightness $L^*$ that only rises or only falls along the map: "
+            r"the eye (and a black-and-white print) reads order from lightness, not from hue.",
+            r"Go along each row and look at the differences between neighbouring values: if "
+            r"their sign changes even once, the lightness turns and the map fails.",
+            "For example " + self._reason(first) + " Judge the other three the same way.",
+        ]
+
+    def worked(self):
+        steps, chosen = [], []
+        for name, row in zip(self.maps, self.lightness):
+            d = np.diff(row)
+            rises, falls = bool(np.all(d >= 0)), bool(np.all(d <= 0))
+            if rises or falls:
+                chosen.append(name)
+            steps.append(("Suitable. " if rises or falls else "Not suitable. ")
+                         + self._reason(name))
+        return Worked(steps, sorted(chosen))
+
     def _check(self, answer):
         names = _read_names(answer, self.maps)
         if isinstance(names, Feedback):
@@ -751,23 +1005,87 @@ class MonotonicMaps(_Chapter10):
 #: The kinds of colour map.
 MAP_KINDS = ("sequential", "diverging", "qualitative")
 
-#: Data sets and the kind of colour map each needs.
-SCENARIOS = (
-    ("the yearly rainfall in millimetres over a country", "sequential"),
-    ("the population density of the districts of a city", "sequential"),
-    ("the density of a CT scan, from air to bone", "sequential"),
-    ("the wind speed over an ocean", "sequential"),
-    ("the concentration of a pollutant in a river", "sequential"),
+#: The data sets of the question: (what is shown, the kind of map it needs, what its values are,
+#: whether they are ordered, their meaningful centre or None), typed out one by one.
+_SCENARIO_TABLE = (
+    # sequential: ordered, no special value in between
+    ("the yearly rainfall in millimetres over a country", "sequential",
+     "amounts from no rain to a lot of rain", True, None),
+    ("the population density of the districts of a city", "sequential",
+     "densities from nearly empty to crowded", True, None),
+    ("the density of a CT scan, from air to bone", "sequential",
+     "densities from air (low) to bone (high)", True, None),
+    ("the wind speed over an ocean", "sequential", "speeds from calm to storm", True, None),
+    ("the concentration of a pollutant in a river", "sequential",
+     "concentrations from clean water to heavily polluted", True, None),
+    ("the altitude of the terrain in a mountain range, all of it far above sea level",
+     "sequential", "heights from the valleys to the peaks", True, None),
+    ("the age of the trees in a forest, in years", "sequential",
+     "ages from saplings to old trees", True, None),
+    ("the number of visitors per day of each page of a website", "sequential",
+     "counts from a few visitors to very many", True, None),
+    ("the depth of the water in a lake", "sequential",
+     "depths from the shallow shore to the deepest point", True, None),
+    ("the brightness measured by each pixel of a camera sensor", "sequential",
+     "intensities from dark to bright", True, None),
+    ("the average household income of each district of a city", "sequential",
+     "incomes from low to high", True, None),
+    ("the traffic on each street of a city, in cars per hour", "sequential",
+     "counts from empty streets to jams", True, None),
+    # diverging: ordered, with a meaningful centre
     ("the temperature anomaly: this year's temperature minus the 30-year average",
-     "diverging"),
+     "diverging", "deviations, warmer or colder than usual", True, "0, the long-term average"),
     ("the election margin: the share of party A minus the share of party B, per district",
-     "diverging"),
-    ("correlation coefficients between -1 and 1 in a matrix", "diverging"),
-    ("the profit or loss of each branch of a company", "diverging"),
-    ("the land use of each parcel: forest, farmland, water, city", "qualitative"),
-    ("the labels of a segmented scan: bone, muscle, fat, air", "qualitative"),
-    ("the cluster number (1 to 6) that a clustering algorithm gave each point", "qualitative"),
+     "diverging", "margins for A or for B", True, "0, a tie"),
+    ("correlation coefficients between -1 and 1 in a matrix", "diverging",
+     "correlations, negative or positive", True, "0, no correlation"),
+    ("the profit or loss of each branch of a company", "diverging",
+     "results, gains or losses", True, "0, breaking even"),
+    ("the change of the population of each district since the last census, in per cent",
+     "diverging", "changes, growth or shrinkage", True, "0 %, no change"),
+    ("the difference between a simulated and a measured temperature in each grid cell",
+     "diverging", "errors, too warm or too cold", True, "0, perfect agreement"),
+    ("the elevation relative to sea level on a map of a coast, from the sea floor to the hills",
+     "diverging", "heights above and depths below the sea", True, "0, sea level"),
+    ("the vorticity of a flow: positive for counter-clockwise, negative for clockwise rotation",
+     "diverging", "rotations one way or the other", True, "0, no rotation"),
+    ("the deviation of each pupil's test score from the class average", "diverging",
+     "deviations above or below the average", True, "0, exactly the average"),
+    ("the net migration of each region: the people moving in minus the people moving out",
+     "diverging", "balances, gains or losses of people", True, "0, as many in as out"),
+    ("the change of the thickness of a glacier since 1990, in metres", "diverging",
+     "changes, thinner or thicker", True, "0, no change"),
+    ("the electric potential around a positive and a negative charge (zero far away)",
+     "diverging", "potentials, positive or negative", True, "0, the potential far away"),
+    # qualitative: names, no order
+    ("the land use of each parcel: forest, farmland, water, city", "qualitative",
+     "names of land uses", False, None),
+    ("the labels of a segmented scan: bone, muscle, fat, air", "qualitative",
+     "names of tissues", False, None),
+    ("the cluster number (1 to 6) that a clustering algorithm gave each point", "qualitative",
+     "cluster numbers, mere names: cluster 4 is not 'more' than cluster 2", False, None),
+    ("the political party that won each district", "qualitative", "names of parties", False, None),
+    ("the soil type of each field: clay, sand, loam, peat", "qualitative",
+     "names of soil types", False, None),
+    ("the language spoken most at home in each region", "qualitative",
+     "names of languages", False, None),
+    ("the species of each tree in the tree register of a park", "qualitative",
+     "names of species", False, None),
+    ("the material of each part of a machine: steel, aluminium, plastic, rubber", "qualitative",
+     "names of materials", False, None),
+    ("the blood group of each patient of a study: A, B, AB or O", "qualitative",
+     "names of blood groups", False, None),
+    ("the company that runs each mobile phone mast", "qualitative", "names of companies",
+     False, None),
+    ("the country of origin of each parcel in a shipment", "qualitative",
+     "names of countries", False, None),
+    ("the make of each car in a car park", "qualitative", "names of car makes", False, None),
 )
+
+#: Data sets and the kind of colour map each needs.
+SCENARIOS = tuple((text, kind) for text, kind, *_ in _SCENARIO_TABLE)
+#: What the values of each data set are, whether they are ordered, and their centre (or None).
+_SCENARIO_VALUES = {text: values for text, _, *values in _SCENARIO_TABLE}
 
 _KIND_REASONS = {
     "sequential": "ordered values from low to high with no special value in between: a "
@@ -807,6 +1125,36 @@ class ChooseMapKind(_Chapter10):
 
     def separated(self, mistakes):
         return True
+
+    def hints(self):
+        values, _, _ = _SCENARIO_VALUES[self.scenario]
+        return [
+            r"Two questions decide: do the values have an order (less and more)? And if so, is "
+            r"there a special value in the middle, such as 0 or an average, with deviations on "
+            r"both sides?",
+            r"Categories without order need a *qualitative* map; ordered values without a special "
+            r"middle a *sequential* one; ordered values around a meaningful centre a "
+            r"*diverging* one.",
+            f"Here the values are {values}. Is there an order, and is one value in the middle "
+            "special?",
+        ]
+
+    def worked(self):
+        values, ordered, centre = _SCENARIO_VALUES[self.scenario]
+        if not ordered:
+            kind = "qualitative"
+            steps = [f"The values are {values}: categories, with no order.",
+                     "Without an order, no colour may look like more than another: "
+                     "distinct hues of similar lightness."]
+        else:
+            kind = "diverging" if centre is not None else "sequential"
+            middle = (f"Yes: {centre}, with deviations on both sides of it." if centre
+                      else "No: no value in between is special; the values simply run from "
+                      "low to high.")
+            steps = [f"The values are {values}: they are ordered.",
+                     "Is there a meaningful centre? " + middle]
+        steps.append(f"So the answer is **{kind}**: {_KIND_REASONS[kind].split(': ', 1)[1]}.")
+        return Worked(steps, kind)
 
     def _check(self, answer):
         if has_placeholder(answer):

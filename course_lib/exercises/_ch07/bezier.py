@@ -324,7 +324,8 @@ class BernsteinValues(_Chapter7):
         n = self.n
         return (
             rf"Compute the values of all Bernstein polynomials of degree $n = {n}$, "
-            r"$B_i^n(t) = \binom{n}{i}\, t^i (1 - t)^{n-i}$, at $t = " + latex_fraction(self.t) + "$."
+            r"$B_i^n(t) = \binom{n}{i}\, t^i (1 - t)^{n-i}$, at $t = "
+            + latex_fraction(self.t) + "$."
             "\n\n" rf"**Answer:** a list of {n + 1} numbers "
             rf"`[B_0, B_1, ..., B_{n}]` (the value of $B_i^{n}$ at position $i$). "
             + DECIMALS + "\n\n" + data_note("n", "t"))

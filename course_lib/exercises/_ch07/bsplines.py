@@ -509,9 +509,9 @@ class ActiveControlPoints(_Chapter7):
                    r"$u_k \le t$, counting the knots from 0 (naming the span by its right end, "
                    r"or counting from 1, gives $k + 1$). " + where)
         span_down = (r"You took the knot span one too low, $k - 1$: the control points "
-                     r"$P_{k-p-1}, \dots, P_{k-1}$. The span of $t$ is $[u_k, u_{k+1})$, the "
-                     r"**last** $k$ with $u_k \le t$ (the span that ends at $t$'s left "
-                     r"knot is the one before it). " + where)
+                     r"$P_{k-p-1}, \dots, P_{k-1}$. That span, $[u_{k-1}, u_k)$, ends before "
+                     r"$t$; the span of $t$ starts at the **last** knot at or below $t$ and "
+                     r"ends at the first knot above it. " + where)
         few = (r"One control point is missing: a B-spline of degree $p$ has $p + 1$ active "
                r"control points on every knot span, $P_{k-p}, \dots, P_k$ for the span "
                r"$[u_k, u_{k+1})$.")

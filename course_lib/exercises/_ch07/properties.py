@@ -237,8 +237,8 @@ class CurveProperties(_Chapter7):
         return True
 
     def _read(self, answer):
-        form = ("Give a list of property names from the menu, e.g. "
-                "`['convex hull', 'affine invariance']` (`[]` if none holds).")
+        form = ("Give a list of property names from the table, e.g. "
+                f"`{[self.menu[0]]!r}` (`[]` if none holds).")
         return read_names(answer, self.menu, form, "is not on the menu. The names are:",
                           _normalise_property)
 
@@ -271,6 +271,7 @@ class CurveProperties(_Chapter7):
             r"B-splines and NURBS have clamped knot vectors, rational types have positive "
             r"weights, and each B-spline has more control points than its degree plus one." "\n\n"
             "| name | meaning |\n|---|---|\n" + rows + "\n\n"
-            r"**Answer:** the list of the names of all properties that hold, e.g. "
-            r"`['convex hull', 'affine invariance']` (the order does not matter)." "\n\n"
+            r"**Answer:** the list of the names of all properties in the table that hold, "
+            f"spelled as in the table, e.g. `{[self.menu[0]]!r}` (the order does not matter)."
+            "\n\n"
             + data_note("kind", "menu"))

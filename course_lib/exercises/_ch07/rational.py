@@ -337,13 +337,15 @@ class ConicType(_Chapter7):
     def mistakes(self):
         swap = {"ellipse": "hyperbola", "hyperbola": "ellipse", "parabola": "parabola"}
         return [
-            Mistake([curves.conic_type(w1) for _, w1, _ in self.weights], r"You judged each arc by "
+            Mistake([curves.conic_type(w1) for _, w1, _ in self.weights],
+                    r"You judged each arc by "
                     r"its middle weight alone. The rule $w < 1$ / $w = 1$ / $w > 1$ holds for the "
                     r"standard form with end weights 1. Bring each arc to that form first: the "
                     r"curve does not change when all weights are multiplied by $c$, nor when they "
                     r"become $(w_0, c\,w_1, c^2 w_2)$, so the number that decides is "
                     r"$w = \frac{w_1}{\sqrt{w_0 w_2}}$.", "middle weight alone", numeric=False),
-            Mistake([swap[name] for name in self.expected], r"Ellipse and hyperbola are swapped. A "
+            Mistake([swap[name] for name in self.expected],
+                    r"Ellipse and hyperbola are swapped. A "
                     r"small middle weight lets the curve stay away from $P_1$, closing it up: "
                     r"$w < 1$ gives an ellipse; a large one pulls the curve towards $P_1$ and "
                     r"open: $w > 1$ gives a hyperbola (with $w = \frac{w_1}{\sqrt{w_0 w_2}}$).",
