@@ -22,14 +22,13 @@ __all__ = [
 
 
 class ClampedKnotVector(_Chapter7):
-    r"""The clamped, evenly spaced knot vector for a number of control points, degree and domain.
+    r"""The clamped knot vector on :math:`[0, 1]` for a given number of control points and degree.
 
-    On the domain :math:`[a, b]`: :math:`p + 1` copies of :math:`a`, the :math:`N - p - 1`
-    interior knots :math:`a + j\,\frac{b - a}{N - p}` (:math:`j = 1, \dots, N - p - 1`), and
-    :math:`p + 1` copies of :math:`b`: :math:`N + p + 1` knots for :math:`N` control points. The
-    domain is :math:`[0, 1]` or :math:`[0, N - p]` (whole-number knots, spans of length 1).
+    :math:`p + 1` zeros, the :math:`N - p - 1` interior knots :math:`\frac{1}{N-p}, \dots,
+    \frac{N-p-1}{N-p}`, :math:`p + 1` ones: :math:`N + p + 1` knots for :math:`N` control
+    points. Degrees 1 to 5, with 2 to 9 knot spans.
 
-    Attributes: ``n_control`` (N), ``p`` (the degree), ``domain`` (a, b).
+    Attributes: ``n_control`` (N), ``p`` (the degree).
 
     Examples
     --------
@@ -45,41 +44,35 @@ class ClampedKnotVector(_Chapter7):
     what = "the knot vector"
 
     def draw(self, rng):
-        self.p = int(pick(rng, (1, 2, 3, 4)))
-        spans = int(pick(rng, (2, 3, 4, 5, 6)))
-        self.n_control = self.p + spans
-        self.domain = (0.0, 1.0) if rng.random() < 0.6 else (0.0, float(spans))
-        a, b = self.domain
-        self.expected = a + (b - a) * curves.clamped_knots(self.n_control, self.p)
+        self.p = int(pick(rng, (1, 2, 3, 4, 5)))
+        self.n_control = self.p + int(pick(rng, (2, 3, 4, 5, 6, 7, 8, 9)))
+        self.expected = curves.clamped_knots(self.n_control, self.p)
 
     def hints(self):
         N, p = self.n_control, self.p
-        (a, b), m = self.domain, N - p
+        m = N - p
+        knots = "knot" if m == 2 else "knots"
         return [
             rf"Count first: $N$ control points and degree $p$ need $N + p + 1 = {N} + {p} + 1 "
             rf"= {N + p + 1}$ knots.",
-            rf"Clamping repeats each end knot $p + 1 = {p + 1}$ times: {p + 1} copies of "
-            rf"${_num(a)}$ at the start and {p + 1} copies of ${_num(b)}$ at the end.",
-            rf"That leaves $N - p - 1 = {m - 1}$ interior knot{'s' if m > 2 else ''}, "
-            r"spaced evenly over "
-            rf"$[{_num(a)}, {_num(b)}]$: the {m} knot spans each have length "
-            rf"$\frac{{{_num(b - a)}}}{{{m}}} = {_frac((b - a) / m)}$.",
+            rf"Clamping repeats each end knot $p + 1 = {p + 1}$ times: {p + 1} zeros at the "
+            rf"start and {p + 1} ones at the end.",
+            rf"That leaves $N - p - 1 = {m - 1}$ interior {knots}, spaced evenly: the "
+            rf"$N - p = {m}$ knot spans of $[0, 1]$ each have length ${_frac(1 / m)}$.",
         ]
 
     def worked(self):
         N, p = self.n_control, self.p
-        (a, b), m = self.domain, N - p
-        step = (b - a) / m
-        interior = [a + j * step for j in range(1, m)]
-        knots = [a] * (p + 1) + interior + [b] * (p + 1)
+        m = N - p
+        interior = [j / m for j in range(1, m)]
+        knots = [0.0] * (p + 1) + interior + [1.0] * (p + 1)
         return Worked([
             rf"The number of knots: $N + p + 1 = {N} + {p} + 1 = {N + p + 1}$.",
-            rf"The ends, repeated $p + 1 = {p + 1}$ times: ${_num(a)}$ and ${_num(b)}$, "
+            rf"The ends, repeated $p + 1 = {p + 1}$ times: {p + 1} zeros and {p + 1} ones, "
             rf"{2 * (p + 1)} knots.",
-            rf"The remaining $N - p - 1 = {m - 1}$ interior knot{'s' if m > 2 else ''} "
-            r"split "
-            rf"$[{_num(a)}, {_num(b)}]$ into $N - p = {m}$ equal spans of length "
-            rf"${_frac(step)}$: " + (", ".join(f"${_frac(x)}$" for x in interior) or "none")
+            rf"The remaining $N - p - 1 = {m - 1}$ interior knot{'s' if m > 2 else ''} split "
+            rf"$[0, 1]$ into $N - p = {m}$ equal spans: $\frac{{j}}{{{m}}}$ for "
+            rf"$j = 1, \dots, {m - 1}$, i.e. " + ", ".join(f"${_frac(x)}$" for x in interior)
             + ".",
             r"Together, in order: $U = (" + r",\ ".join(_frac(x) for x in knots) + ")$.",
         ], np.array(knots))
@@ -130,24 +123,17 @@ class ClampedKnotVector(_Chapter7):
                             "one knot too many")
         if len(value) != want:
             return Feedback("wrong", f"You gave {len(value)} knots." + count, "wrong count")
-        a, b = self.domain
         scale = value[-1] - value[0]
-        if scale > 0 and close(a + (b - a) * (value - value[0]) / scale, self.expected):
-            same = ("(Shifting and scaling all knots alike gives the same curve, an affine "
-                    "reparametrisation, but the answer asked for is the one on "
-                    f"$[{_num(a)}, {_num(b)}]$.)")
-            if (a, b) == (0.0, 1.0):
-                return Feedback("wrong", "The pattern is right, but your knots run from "
-                                f"{_num(value[0])} to {_num(value[-1])}, and the question asks "
-                                "for the domain $[0, 1]$: subtract the first knot and divide by "
-                                "the length of the range. " + same, "not normalised")
+        if scale > 0 and close((value - value[0]) / scale, self.expected):
             return Feedback("wrong", "The pattern is right, but your knots run from "
                             f"{_num(value[0])} to {_num(value[-1])}, and the question asks for "
-                            f"the domain $[{_num(a)}, {_num(b)}]$: with $N - p = {N - p}$ spans "
-                            "of length 1 the knots are whole numbers. " + same, "wrong domain")
+                            "the domain $[0, 1]$. (Shifting and scaling all knots alike gives "
+                            "the same curve, an affine reparametrisation, but the answer asked "
+                            "for is the one on $[0, 1]$: subtract the first knot and divide by "
+                            "the length of the range.)", "not normalised")
         return Feedback("wrong", f"The ends are right but the interior knots are not: there "
                         f"are $N - p - 1 = {N - p - 1}$ of them, spaced evenly, "
-                        f"$a + j\\,\\frac{{b - a}}{{N - p}}$ for $j = 1, \\dots, {N - p - 1}$, "
+                        f"$\\frac{{1}}{{{N - p}}}, \\dots, \\frac{{{N - p - 1}}}{{{N - p}}}$, "
                         "so that all knot spans have the same length.", "interior knots")
 
     def statement(self):
@@ -155,11 +141,10 @@ class ClampedKnotVector(_Chapter7):
         return (
             rf"A B-spline curve of degree $p = {p}$ has $N = {N}$ control points "
             rf"$P_0, \dots, P_{{{N - 1}}}$. Give its **clamped** knot vector on the domain "
-            rf"$[{_num(self.domain[0])}, {_num(self.domain[1])}]$: the end knots repeated so "
-            rf"that the curve starts at $P_0$ and ends at $P_{{{N - 1}}}$, and the interior "
-            r"knots evenly spaced." "\n\n"
+            r"$[0, 1]$: the end knots repeated so that the curve starts at $P_0$ and ends at "
+            rf"$P_{{{N - 1}}}$, and the interior knots evenly spaced." "\n\n"
             r"**Answer:** the knots as a list of numbers, in non-decreasing order. "
-            + DECIMALS + "\n\n" + data_note("n_control", "p", "domain"))
+            + DECIMALS + "\n\n" + data_note("n_control", "p"))
 
 
 class CoxDeBoorBasis(_Chapter7):

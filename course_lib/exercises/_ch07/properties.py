@@ -170,8 +170,9 @@ class CurveProperties(_Chapter7):
     r"""Which of the listed properties hold for a given kind of curve or surface.
 
     Each question shows 6 of the 10 properties of :data:`PROPERTY_MENU` (at least one that holds
-    and one that does not); the answer is the set of those that hold. Each property missing or
-    wrongly claimed is explained. Its diagnosis is ``"missing: <name>"`` or
+    and one that does not); the answer is the set of those that hold (a property of the menu
+    that is not shown may be listed too when it holds). Each property missing or wrongly
+    claimed is explained. Its diagnosis is ``"missing: <name>"`` or
     ``"extra: <name>"`` for the first such property in menu order.
 
     Attributes: ``kind`` (e.g. ``"NURBS curve"``), ``menu`` (the names of the properties shown).
@@ -239,17 +240,22 @@ class CurveProperties(_Chapter7):
     def _read(self, answer):
         form = ("Give a list of property names from the table, e.g. "
                 f"`{[self.menu[0]]!r}` (`[]` if none holds).")
-        return read_names(answer, self.menu, form, "is not on the menu. The names are:",
-                          _normalise_property)
+        return read_names(answer, tuple(PROPERTY_MENU), form,
+                          "is not a property of the menu. The names are:", _normalise_property)
 
     def _judge(self, answer):
         names = self._read(answer)
         if isinstance(names, Feedback):
             return names
-        if names == self.expected:
-            return Feedback("correct", f"Exactly these {len(names)} properties hold for a "
-                            f"{self.kind}.")
-        wrong = [name for name in self.menu if (name in names) != (name in self.expected)]
+        # A property of the full menu that the table does not show may be named too: one that
+        # holds is simply true (it is not asked about), one that fails is an error.
+        holds = _properties_of(self.kind)
+        wrong = [name for name in PROPERTY_MENU
+                 if ((name in names) != (name in self.expected) if name in self.menu
+                     else name in names and name not in holds)]
+        if not wrong:
+            return Feedback("correct", f"Exactly these {len(self.expected)} properties of the "
+                            f"table hold for a {self.kind}.")
         first = wrong[0]
         key = ("missing: " if first in self.expected else "extra: ") + first
         missing = [n for n in wrong if n in self.expected]
