@@ -190,19 +190,20 @@ class CoxDeBoorBasis(_Chapter7):
         for r in range(1, p + 1):
             prev, level = levels[-1], {}
             for i in range(k - r, k + 1):
-                value, terms = 0.0, []
+                value, names, numbers = 0.0, [], []
                 if i in prev:                        # (t - u_i) / (u_{i+r} - u_i) N_{i,r-1}
-                    f = (t - u[i]) / (u[i + r] - u[i])
-                    value += f * prev[i][0]
-                    terms.append(rf"\frac{{{_num(t - u[i])}}}{{{_num(u[i + r] - u[i])}}}"
-                                 rf"\cdot {_num(prev[i][0], 4)}")
+                    f = rf"\frac{{{_num(t - u[i])}}}{{{_num(u[i + r] - u[i])}}}"
+                    value += (t - u[i]) / (u[i + r] - u[i]) * prev[i][0]
+                    names.append(rf"{f}\,N_{{{i},{r - 1}}}")
+                    numbers.append(rf"{f} \cdot {_num(prev[i][0], 4)}")
                 if i + 1 in prev:                    # (u_{i+r+1} - t) / (...) N_{i+1,r-1}
-                    g = (u[i + r + 1] - t) / (u[i + r + 1] - u[i + 1])
-                    value += g * prev[i + 1][0]
-                    terms.append(rf"\frac{{{_num(u[i + r + 1] - t)}}}"
-                                 rf"{{{_num(u[i + r + 1] - u[i + 1])}}}"
-                                 rf"\cdot {_num(prev[i + 1][0], 4)}")
-                level[i] = (value, " + ".join(terms))
+                    g = (rf"\frac{{{_num(u[i + r + 1] - t)}}}"
+                         rf"{{{_num(u[i + r + 1] - u[i + 1])}}}")
+                    value += ((u[i + r + 1] - t) / (u[i + r + 1] - u[i + 1])
+                              * prev[i + 1][0])
+                    names.append(rf"{g}\,N_{{{i + 1},{r - 1}}}")
+                    numbers.append(rf"{g} \cdot {_num(prev[i + 1][0], 4)}")
+                level[i] = (value, " + ".join(names) + " = " + " + ".join(numbers))
             levels.append(level)
         return k, levels
 
