@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from geomdl import BSpline as GeomdlBSpline
 from geomdl import knotvector
-from scipy.interpolate import BSpline
+from scipy.interpolate import BSpline, PPoly
 
 from course_lib.exercises import ch07
 import exercise_harness as harness
@@ -156,27 +156,29 @@ def elevation(ex):
 
 def clamped_knot_vector(ex):
     N, p = ex.n_control, ex.p
-    right = np.array(knotvector.generate(p, N), dtype=float)
+    a, b = 0.0, 1.0
+    right = unit = np.array(knotvector.generate(p, N), dtype=float)       # geomdl: on [0, 1]
     assert len(right) == N + p + 1
 
     def clamped(copies, interior):
-        inner = [j / (interior + 1) for j in range(1, interior + 1)]
-        return np.array([0.0] * copies + inner + [1.0] * copies)
+        inner = [a + (b - a) * j / (interior + 1) for j in range(1, interior + 1)]
+        return np.array([a] * copies + inner + [b] * copies)
 
-    interior = right[p + 1:N].copy()
     odd = right.copy()
-    odd[p + 1:N] = interior ** 2
-    return right, {
+    odd[p + 1:N] = a + (b - a) * unit[p + 1:N] ** 2          # ends right, interior uneven
+    mistakes = {
         "p copies at the ends": clamped(p, N - p - 1),
-        "not clamped": np.linspace(0, 1, N + p + 1),
         "end multiplicity": clamped(p + 2, N - p - 1),
         "one knot short": clamped(p + 1, N - p - 2),
         "one knot too many": clamped(p + 1, N - p),
         "wrong count": clamped(p + 1, N - p + 1),
-        "not normalised": right * (N - p),
         "interior knots": odd,
         "decreasing": right[::-1],
     }
+    if p > 1:                                 # for p = 1 these are the "p copies" above
+        mistakes["not clamped"] = np.linspace(a, b, N + p + 1)
+    mistakes["not normalised"] = unit * (N - p)                  # whole knots on [0, N - p]
+    return right, mistakes
 
 
 def cox_de_boor(ex):
@@ -215,7 +217,8 @@ def active_points(ex):
     assert len(right) == p + 1
     lo, hi = min(right), max(right)
     candidates = {
-        "off by one": [set(range(lo + 1, hi + 2)), set(range(lo - 1, hi))],
+        "span k+1": [set(range(lo + 1, hi + 2))],                # P_{k-p+1}, ..., P_{k+1}
+        "span k-1": [set(range(lo - 1, hi))],
         "one too few": [set(range(lo + 1, hi + 1)), set(range(lo, hi))],
         "one too many": [set(range(lo - 1, hi + 1)), set(range(lo, hi + 2))],
         "global control": [set(range(N))],
@@ -224,16 +227,34 @@ def active_points(ex):
                    for key, sets in candidates.items()}
 
 
+def spline_piece(P, u, p, span, t):
+    """The polynomial piece of the B-spline on knot span `span`, evaluated at t (also outside
+    that span): scipy's piecewise-polynomial form of the spline, one coordinate at a time."""
+    return np.array([np.polyval(PPoly.from_spline((u, P[:, d], p)).c[:, span], t - u[span])
+                     for d in range(P.shape[1])])
+
+
 def bspline_point(ex):
     P, u, p, t = np.asarray(ex.P, dtype=float), np.asarray(ex.knots, dtype=float), ex.p, ex.t
     right = BSpline(u, P, p)(t)
-    a, b = u[p], u[len(P)]
+    N = len(P)
+    a, b = u[p], u[N]
     k = int(np.searchsorted(u, t, side="right")) - 1
-    return right, {
+    assert gap(spline_piece(P, u, p, k, t), right) < 1e-9          # the piece of t's own span
+    mistakes = {
         "Bézier curve": bezier_point(P, (t - a) / (b - a)),
         "uniform knots": BSpline(even_knots(u, p), P, p)(t),
         "local Bézier": bezier_point(P[k - p:k + 1], (t - u[k]) / (u[k + 1] - u[k])),
     }
+    for other, key in ((k + 1, "span k+1"), (k - 1, "span k-1")):
+        if p <= other < N and u[other] < u[other + 1]:          # a non-empty span of the domain
+            mistakes[key] = spline_piece(P, u, p, other, t)
+    weights = basis_values(u, p, t)
+    shifted = [weights[k - p:k + 1] @ P[k - p + s:k + 1 + s] for s in (1, -1)
+               if k - p + s >= 0 and k + s < N]
+    if shifted:
+        mistakes["points shifted"] = Either(shifted)
+    return right, mistakes
 
 
 def rational_point(ex):
@@ -334,9 +355,10 @@ KINDS = ("Bézier curve", "B-spline curve", "rational Bézier curve", "NURBS cur
 
 def curve_properties(ex):
     column = KINDS.index(ex.kind)
-    right = {name for name, row in PROPERTY_TABLE.items() if row[column]}
+    assert len(ex.menu) == 6 and set(ex.menu) <= set(PROPERTY_TABLE)
+    right = {name for name, row in PROPERTY_TABLE.items() if row[column] and name in ex.menu}
     mistakes = {}
-    for name in PROPERTY_TABLE:
+    for name in ex.menu:
         if name in right:
             mistakes[f"missing: {name}"] = right - {name}
         else:
@@ -449,7 +471,7 @@ def test_wrong_answers_get_teaching_feedback():
             assert fb.status == "wrong" and len(fb.message) > 80, (ex, fb)
     for ex in exercises("CurveProperties", range(30)):
         right, _ = curve_properties(ex)
-        everything = sorted(PROPERTY_TABLE)
+        everything = list(ex.menu)
         fb = ex.check(everything)
         wrong = set(everything) - right
         assert fb.status == "wrong" and all(n in fb.message for n in wrong)
@@ -492,3 +514,82 @@ def test_clamped_knots_agree_with_the_textbook_count():
 def test_every_kind_of_curve_and_surface_is_asked():
     assert {ex.kind for ex in exercises("CurveProperties")} == set(KINDS)
     assert set(ch07.PROPERTY_MENU) == set(PROPERTY_TABLE)
+
+
+#: A fresh seed is a fresh exercise: among VARIETY_SEEDS seeds every exercise has at least
+#: MIN_VARIANTS variants (distinct right answers; distinct statements where the answer is a
+#: choice from a menu or a list of indices).
+VARIETY_SEEDS = range(300)
+MIN_VARIANTS = 40       # reached: ClampedKnotVector and BasisSupport have 40
+
+
+def variant_key(ex, form):
+    if form in DISCRETE:
+        return ex.statement()
+    right, _ = SPECS[type(ex).__name__][0](ex)
+    return tuple(np.round(np.ravel(np.asarray(right, dtype=float)), 6))
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_a_fresh_seed_is_a_fresh_exercise(name):
+    cls, form = getattr(ch07, name), SPECS[name][1]
+    found = {variant_key(cls(seed=seed), form) for seed in VARIETY_SEEDS}
+    assert len(found) >= MIN_VARIANTS, (name, len(found))
+
+
+def test_whole_numbers_are_compared_exactly():
+    """Indices and whole-number knots: 3.0 is 3, and one more or one less is wrong."""
+    for ex in exercises("BasisSupport", range(40)):
+        right, _ = basis_support(ex)
+        assert ex.check([float(x) for x in right]).status == "correct"
+        for k in range(2):
+            for step in (1, -1):
+                near = np.array(right, dtype=float)
+                near[k] += step
+                fb = ex.check(near)
+                assert fb.status == "wrong", (ex, near, fb)
+        off = np.array(right, dtype=float) + [0, 0.001]      # close is not enough
+        assert ex.check(off).status == "wrong"
+    for ex in exercises("ActiveControlPoints", range(40)):
+        right, _ = active_points(ex)
+        assert ex.check([float(i) for i in sorted(right)]).status == "correct"
+        assert ex.check(np.array(sorted(right))).status == "correct"
+        top = max(right)
+        if top + 1 < ex.n_control:                            # the last index one too high
+            fb = ex.check(sorted(right - {top} | {top + 1}))
+            assert fb.status == "wrong", (ex, fb)
+        assert ex.check(sorted(right)[:-1] + [top + 0.5]).status == "invalid"
+
+
+def test_an_off_by_one_span_is_named_with_this_variants_span():
+    """The slips "span k-1" and "span k+1" are explained with the span of t in this variant."""
+    seen = {("ActiveControlPoints", "span k-1"): 0, ("ActiveControlPoints", "span k+1"): 0,
+            ("BSplinePoint", "span k-1"): 0, ("BSplinePoint", "span k+1"): 0,
+            ("BSplinePoint", "points shifted"): 0}
+    for name, solve in (("ActiveControlPoints", active_points), ("BSplinePoint", bspline_point)):
+        for ex in exercises(name):
+            u, t = np.asarray(ex.knots, dtype=float), ex.t
+            k = int(np.searchsorted(u, t, side="right")) - 1
+            _, mistakes = solve(ex)
+            for key in ("span k-1", "span k+1", "points shifted"):
+                for value in mistakes.get(key, []) if isinstance(mistakes.get(key), Either) \
+                        else ([mistakes[key]] if key in mistakes else []):
+                    fb = ex.check(as_answer(value, SPECS[name][1]))
+                    assert fb.diagnosis == key, (ex, key, fb)
+                    assert f"k = {k}" in fb.message, (ex, key, fb.message)
+                    seen[(name, key)] += 1
+    assert min(seen.values()) >= 50, seen
+
+
+def test_properties_not_shown_may_be_named_when_they_hold():
+    """Listing every property that holds (the table shows 6 of the 10) is right; naming one
+    that is not shown and fails is an error, diagnosed as extra."""
+    for ex in exercises("CurveProperties"):
+        column = KINDS.index(ex.kind)
+        holds = {name for name, row in PROPERTY_TABLE.items() if row[column]}
+        assert ex.check(sorted(holds)).status == "correct", ex
+        hidden_false = [n for n in PROPERTY_TABLE if n not in ex.menu and n not in holds]
+        right, _ = curve_properties(ex)
+        for name in hidden_false:
+            fb = ex.check(sorted(right | {name}))
+            assert fb.status == "wrong" and fb.diagnosis == f"extra: {name}", (ex, name, fb)

@@ -116,7 +116,7 @@ def design_opacity(ex):
 def mpl_lookup(colors, t):
     """The colour at t by matplotlib, whose table has an entry exactly at t."""
     n = len(colors)
-    entries = 4 * (n - 1) + 1                    # entries at multiples of 1 / (4 (n - 1))
+    entries = 20 * (n - 1) + 1                   # entries at multiples of 1 / (20 (n - 1))
     cmap = LinearSegmentedColormap.from_list("q", [tuple(c) for c in colors], N=entries)
     k = round(t * (entries - 1))
     assert math.isclose(k / (entries - 1), t, abs_tol=1e-12)
@@ -202,12 +202,23 @@ def monotonic_maps(ex):
     return right, mistakes
 
 
-#: The kind each data set needs, typed out by hand.
-KIND_BY_WORD = {"rainfall": "sequential", "population density": "sequential",
-                "CT scan": "sequential", "wind speed": "sequential", "pollutant": "sequential",
-                "anomaly": "diverging", "election margin": "diverging",
-                "correlation": "diverging", "profit or loss": "diverging",
-                "land use": "qualitative", "labels": "qualitative", "cluster": "qualitative"}
+#: The kind each data set needs, typed out by hand (one word or phrase of its description).
+KIND_BY_WORD = {
+    "rainfall": "sequential", "population density": "sequential", "CT scan": "sequential",
+    "wind speed": "sequential", "pollutant": "sequential", "mountain range": "sequential",
+    "age of the trees": "sequential", "visitors": "sequential", "depth of the water":
+    "sequential", "camera sensor": "sequential", "household income": "sequential",
+    "cars per hour": "sequential",
+    "anomaly": "diverging", "election margin": "diverging", "correlation": "diverging",
+    "profit or loss": "diverging", "census": "diverging", "simulation": "diverging",
+    "sea floor": "diverging", "trade balance": "diverging", "class average": "diverging",
+    "net migration": "diverging", "glacier": "diverging", "goal difference": "diverging",
+    "parcel: forest": "qualitative", "segmented scan": "qualitative", "cluster": "qualitative",
+    "new town": "qualitative", "election:": "qualitative", "soil type": "qualitative",
+    "language": "qualitative", "species": "qualitative", "machine": "qualitative",
+    "blood group": "qualitative", "country of origin": "qualitative",
+    "car park": "qualitative",
+}
 
 
 def choose_kind(ex):
@@ -323,7 +334,8 @@ def test_numbers_are_nice_for_hand_work():
     for ex in exercises("ColormapLookup"):
         (a, b), n = ex.in_range, len(ex.colors)
         p = (ex.value - a) / (b - a) * (n - 1)
-        assert p * 4 == round(p * 4) and p != round(p)          # between two control colours
+        assert math.isclose(p * 20, round(p * 20)) and p != round(p)    # between two colours
+        assert ex.value == round(ex.value)
     for ex in exercises("LightnessOfColour"):
         assert np.all(np.isin(np.round(ex.rgb, 6), [0, 0.2, 0.4, 0.6, 0.8, 1]))
     for ex in exercises("TransferValues"):
@@ -334,6 +346,43 @@ def test_numbers_are_nice_for_hand_work():
 
 
 def test_every_scenario_and_kind_is_asked():
-    assert {ex.scenario for ex in exercises("ChooseMapKind")} == {s for s, _ in ch10.SCENARIOS}
+    asked = {ch10.ChooseMapKind(seed=seed).scenario for seed in range(400)}
+    assert asked == {s for s, _ in ch10.SCENARIOS}
+    assert len(ch10.SCENARIOS) == len(KIND_BY_WORD) >= 36
     for scenario, kind in ch10.SCENARIOS:
-        assert [k for w, k in KIND_BY_WORD.items() if w in scenario] == [kind]
+        assert [k for w, k in KIND_BY_WORD.items() if w in scenario] == [kind], scenario
+    for kind in ch10.MAP_KINDS:
+        assert sum(k == kind for _, k in ch10.SCENARIOS) >= 12
+
+
+#: A fresh seed is a fresh exercise: among VARIETY_SEEDS seeds every exercise has at least
+#: MIN_VARIANTS variants (distinct right answers; distinct statements where the answer is a
+#: choice: map names or a kind of map).
+VARIETY_SEEDS = range(300)
+MIN_VARIANTS = 36       # reached: ChooseMapKind asks each of its 36 data sets
+
+
+def variant_key(ex, form):
+    if form in DISCRETE:
+        return ex.statement()
+    right, _ = SPECS[type(ex).__name__][0](ex)
+    return tuple(np.round(np.ravel(np.asarray(right, dtype=float)), 6))
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_a_fresh_seed_is_a_fresh_exercise(name):
+    cls, form = getattr(ch10, name), SPECS[name][1]
+    found = {variant_key(cls(seed=seed), form) for seed in VARIETY_SEEDS}
+    assert len(found) >= MIN_VARIANTS, (name, len(found))
+
+
+def test_design_opacity_uses_the_tolerance_policy():
+    """Control points right to 3 significant digits pass; an opacity off by more does not."""
+    for ex in exercises("DesignOpacity", range(40)):
+        right, _ = design_opacity(ex)
+        lo, hi, w, a = ex.low, ex.high, ex.width, ex.alpha
+        close = [(lo - w, 0.0), (lo, a + 0.001), (hi, a + 0.001), (hi + w, 0.0)]
+        assert ex.check(close).status == "correct", ex
+        off = [(lo - w, 0.0), (lo, a + 0.01), (hi, a + 0.01), (hi + w, 0.0)]
+        fb = ex.check(off)
+        assert fb.status == "wrong" and fb.diagnosis == "function differs", (ex, fb)

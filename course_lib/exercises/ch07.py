@@ -8,7 +8,10 @@ de Boor's algorithm; a rational quadratic Bézier point, the circular arc as a r
 the type of conic a set of weights gives; a point of a Bézier patch; and which properties hold
 for which kind of curve or surface. The ``seed`` draws numbers that work out by hand: control
 points with small whole coordinates, parameters among :math:`\tfrac14, \tfrac13, \tfrac12,
-\tfrac23, \tfrac34`, whole-number knots.
+\tfrac23, \tfrac34` (tenths too for the Bernstein values), whole-number knots.
+
+Every exercise helps on request: ``hint()`` gives the next of its hints, ``solution()`` works
+the student's own variant out step by step (see :mod:`course_lib.exercises.core`).
 
 The expected answers come from :mod:`course_lib.curves` and :mod:`course_lib.surfaces`. Each
 exercise names the slips it anticipates (the binomial coefficient left out, :math:`t` and

@@ -144,3 +144,66 @@ class _Points(_Chapter7):
 
 _POINT_2 = ("**Answer:** the point as a list of 2 numbers `[x, y]`. " + DECIMALS)
 _POINT_3 = ("**Answer:** the point as a list of 3 numbers `[x, y, z]`. " + DECIMALS)
+
+
+# ---------------------------------------------------------------------------------------------
+# Worked solutions: the arithmetic a student writes down, done here step by step
+# ---------------------------------------------------------------------------------------------
+
+def _casteljau_by_hand(P, t):
+    """The levels of de Casteljau's triangle, level 0 first, by repeated interpolation.
+
+    Each level is ``(1 - t) * previous[:-1] + t * previous[1:]``: what the worked solutions
+    show, written out here rather than taken from :mod:`course_lib.curves`.
+    """
+    levels = [np.asarray(P, dtype=float)]
+    while len(levels[-1]) > 1:
+        prev = levels[-1]
+        levels.append(np.array([(1 - t) * prev[i] + t * prev[i + 1]
+                                for i in range(len(prev) - 1)]))
+    return levels
+
+
+def _level_words(levels, r, t):
+    r"""One step of a worked solution: how level `r` of the triangle comes from level r - 1."""
+    prev, new = levels[r - 1], levels[r]
+    one_minus = _frac(1 - t)
+    terms = [rf"$P_{{{i}}}^{{{r}}} = {one_minus}\,{_vec(prev[i])} + {_frac(t)}\,"
+             rf"{_vec(prev[i + 1])} = {_vec(new[i])}$" for i in range(len(new))]
+    return f"Level {r}: " + "; ".join(terms) + "."
+
+
+def _span_of(knots, t):
+    """The index k with u_k <= t < u_{k+1} (the last such k when knots repeat), by counting."""
+    return max(k for k in range(len(knots) - 1) if knots[k] <= t < knots[k + 1])
+
+
+def _span_words(knots, k, t):
+    r"""The sentence that locates t in its knot span, for hints and worked solutions."""
+    return (rf"$t = {_num(t)}$ lies in the span $[u_{{{k}}}, u_{{{k + 1}}}) = "
+            rf"[{_num(knots[k])}, {_num(knots[k + 1])})$, so $k = {k}$")
+
+
+def _de_boor_by_hand(P, knots, p, t, k):
+    """De Boor's algorithm started on span `k` (also a wrong one: then the piece of span k is
+    extrapolated to t), as a list of levels; each level is a list of (i, alpha, point).
+
+    Level 0 is the control points :math:`P_{k-p}, \\dots, P_k` (alpha None). Returns None when
+    a ratio has a zero denominator (span `k` is empty).
+    """
+    u = np.asarray(knots, dtype=float)
+    d = {i: np.asarray(P[i], dtype=float) for i in range(k - p, k + 1)}
+    levels = [[(i, None, d[i]) for i in range(k - p, k + 1)]]
+    for r in range(1, p + 1):
+        level = []
+        new = {}
+        for i in range(k - p + r, k + 1):
+            width = u[i + p + 1 - r] - u[i]
+            if width == 0:
+                return None
+            alpha = (t - u[i]) / width
+            new[i] = (1 - alpha) * d[i - 1] + alpha * d[i]
+            level.append((i, alpha, new[i]))
+        d.update(new)
+        levels.append(level)
+    return levels

@@ -8,9 +8,11 @@ import math
 import numpy as np
 
 from ... import curves
-from ..core import DECIMALS, UNEXPLAINED, Feedback, Mistake, close, data_note, pick
-from . import (_POINT_2, _T_VALUES, _bernstein_sum, _Chapter7, _control_polygon, _floats_or_none,
-               _frac, _num, _Points, _points_words)
+from ..core import (DECIMALS, UNEXPLAINED, Feedback, Mistake, Worked, agrees, close, data_note,
+                    latex_fraction, pick)
+from . import (_POINT_2, _T_VALUES, _bernstein_sum, _casteljau_by_hand, _Chapter7,
+               _control_polygon, _floats_or_none, _frac, _level_words, _num, _Points,
+               _points_words, _vec)
 
 __all__ = [
     "BernsteinValues",
@@ -90,6 +92,32 @@ class DeCasteljauPoint(_Chapter7):
                             "stopped early")
         return super()._judge(answer)
 
+    def hints(self):
+        n, t = self.n, self.t
+        levels = _casteljau_by_hand(self.P, t)
+        return [
+            r"De Casteljau's algorithm repeats one move: replace two neighbouring points $A, B$ "
+            rf"by $(1 - t)\,A + t\,B$. With {n + 1} control points it takes $n = {n}$ rounds, "
+            r"each round one point fewer.",
+            rf"Here $t = {_frac(t)}$: each new point is ${_frac(1 - t)}$ of the first point plus "
+            rf"${_frac(t)}$ of the second. The first round starts with "
+            rf"$P_0^1 = {_frac(1 - t)}\,P_0 + {_frac(t)}\,P_1 = {_vec(levels[1][0])}$.",
+            rf"The last-but-one level is $P_0^{{{n - 1}}} = {_vec(levels[n - 1][0])}$, "
+            rf"$P_1^{{{n - 1}}} = {_vec(levels[n - 1][1])}$: one more interpolation between "
+            r"them gives $C(t)$.",
+        ]
+
+    def worked(self):
+        n, t = self.n, self.t
+        levels = _casteljau_by_hand(self.P, t)
+        steps = [rf"Level 0 is the control points, {_points_words(self.P)}. Each new point is "
+                 rf"$(1 - t)\,P_i + t\,P_{{i+1}}$ with $1 - t = {_frac(1 - t)}$ and "
+                 rf"$t = {_frac(t)}$."]
+        steps += [_level_words(levels, r, t) for r in range(1, n + 1)]
+        steps.append(rf"One point is left: $C({_frac(t)}) = P_0^{{{n}}} = "
+                     rf"{_vec(levels[n][0])}$.")
+        return Worked(steps, levels[n][0])
+
     def statement(self):
         kind = "quadratic" if self.n == 2 else "cubic"
         return (
@@ -160,6 +188,35 @@ class DeCasteljauLevel(_Points):
                                 "wrong level")
         return None
 
+    def hints(self):
+        t, r = self.t, self.r
+        levels = _casteljau_by_hand(self.P, t)
+        first = levels[1]
+        if r == 1:
+            last = (rf"Level 1 so far: $P_0^1 = {_vec(first[0])}$, $P_1^1 = {_vec(first[1])}$; "
+                    r"the third point comes from $P_2$ and $P_3$ the same way.")
+        else:
+            last = (rf"Level 1 is $P_0^1 = {_vec(first[0])}$, $P_1^1 = {_vec(first[1])}$, "
+                    rf"$P_2^1 = {_vec(first[2])}$; blend its neighbours once more for level 2.")
+        return [
+            r"Each level comes from the one just before it by blending neighbours, "
+            r"$P_i^r = (1 - t)\,P_i^{r-1} + t\,P_{i+1}^{r-1}$. Level 0 is the control points, "
+            r"and each level has one point fewer.",
+            rf"Here $1 - t = {_frac(1 - t)}$ and $t = {_frac(t)}$, so the first point of level "
+            rf"1 is $P_0^1 = {_frac(1 - t)}\,{_vec(self.P[0])} + {_frac(t)}\,{_vec(self.P[1])} "
+            rf"= {_vec(first[0])}$.",
+            last,
+        ]
+
+    def worked(self):
+        t, r = self.t, self.r
+        levels = _casteljau_by_hand(self.P, t)
+        steps = [rf"Level 0 is the control points, {_points_words(self.P)}; "
+                 rf"$1 - t = {_frac(1 - t)}$, $t = {_frac(t)}$."]
+        steps += [_level_words(levels, level, t) for level in range(1, r + 1)]
+        steps.append(rf"Level {r} has {4 - r} points, one per row of the answer.")
+        return Worked(steps, levels[r])
+
     def statement(self):
         count = 4 - self.r
         return (
@@ -171,6 +228,10 @@ class DeCasteljauLevel(_Points):
             rf"**Answer:** a ${count} \times 2$ array, one point per row, in the order "
             rf"$P_0^{{{self.r}}}, P_1^{{{self.r}}}, \dots$. " + DECIMALS + "\n\n"
             + data_note("P", "t", "r"))
+
+
+#: The parameters of the Bernstein question: tenths, quarters and thirds.
+_BERNSTEIN_T = (0.1, 0.2, 0.25, 0.3, 1 / 3, 0.4, 0.5, 0.6, 2 / 3, 0.7, 0.75, 0.8, 0.9)
 
 
 class BernsteinValues(_Chapter7):
@@ -196,8 +257,8 @@ class BernsteinValues(_Chapter7):
     may_coincide = ("powers swapped",)
 
     def draw(self, rng):
-        self.n = int(pick(rng, (2, 3, 4)))
-        self.t = float(pick(rng, _T_VALUES))
+        self.n = int(pick(rng, (2, 3, 4, 5)))
+        self.t = float(pick(rng, _BERNSTEIN_T))
         self.expected = curves.bernstein(self.n, None, self.t)
 
     def mistakes(self):
@@ -221,7 +282,7 @@ class BernsteinValues(_Chapter7):
         value = _floats_or_none(answer)
         if fb.status == "wrong" and fb.diagnosis in UNEXPLAINED and value is not None:
             total = float(np.sum(value))
-            if abs(total - 1) > 1e-3:
+            if not agrees(total, 1.0):
                 return Feedback("wrong", f"{fb.message} Your values add up to "
                                 f"{_num(total)}, but the Bernstein polynomials of one degree "
                                 r"always add up to 1: check each "
@@ -230,11 +291,41 @@ class BernsteinValues(_Chapter7):
                             r"$\binom{n}{i}\, t^i (1 - t)^{n-i}$.", fb.diagnosis)
         return fb
 
+    def hints(self):
+        n, t = self.n, self.t
+        row = ", ".join(str(math.comb(n, i)) for i in range(n + 1))
+        s, c = latex_fraction(t), latex_fraction(1 - t)
+        return [
+            r"Each value is $B_i^n(t) = \binom{n}{i}\, t^i (1 - t)^{n-i}$. The binomial "
+            rf"coefficients of degree {n} are {row} (row {n} of Pascal's triangle).",
+            rf"Here $t = {s}$ and $1 - t = {c}$. The two ends are the plain powers: "
+            rf"$B_0^{n}(t) = (1 - t)^{n} = {_num((1 - t) ** n, 4)}$ and "
+            rf"$B_{n}^{n}(t) = t^{n} = {_num(t ** n, 4)}$.",
+            rf"Next, $B_1^{n}(t) = {n} \cdot {s} \cdot ({c})^{{{n - 1}}} = "
+            rf"{_num(n * t * (1 - t) ** (n - 1), 4)}$. When you have all {n + 1} values, check "
+            r"that they add up to 1.",
+        ]
+
+    def worked(self):
+        n, t = self.n, self.t
+        s, c = latex_fraction(t), latex_fraction(1 - t)
+        values = []
+        steps = [rf"With $n = {n}$, $t = {s}$ and $1 - t = {c}$, compute "
+                 r"$\binom{n}{i}\, t^i (1 - t)^{n-i}$ for each $i$."]
+        for i in range(n + 1):
+            value = math.comb(n, i) * t ** i * (1 - t) ** (n - i)
+            values.append(value)
+            steps.append(rf"$B_{i}^{n} = {math.comb(n, i)} \cdot ({s})^{{{i}}} \cdot "
+                         rf"({c})^{{{n - i}}} = {_num(value, 4)}$.")
+        steps.append(rf"Check: the values add up to ${_num(sum(values), 4)}$.")
+        return Worked(steps, np.array(values))
+
     def statement(self):
         n = self.n
         return (
             rf"Compute the values of all Bernstein polynomials of degree $n = {n}$, "
-            r"$B_i^n(t) = \binom{n}{i}\, t^i (1 - t)^{n-i}$, at $t = " + _frac(self.t) + "$."
+            r"$B_i^n(t) = \binom{n}{i}\, t^i (1 - t)^{n-i}$, at $t = "
+            + latex_fraction(self.t) + "$."
             "\n\n" rf"**Answer:** a list of {n + 1} numbers "
             rf"`[B_0, B_1, ..., B_{n}]` (the value of $B_i^{n}$ at position $i$). "
             + DECIMALS + "\n\n" + data_note("n", "t"))
@@ -295,6 +386,36 @@ class BezierEndTangent(_Chapter7):
                              "normalised"))
         return found
 
+    def _edge(self):
+        P, n = self.P, self.n
+        if self.end == 0:
+            return "P_1 - P_0", P[1], P[0]
+        return f"P_{n} - P_{n - 1}", P[n], P[n - 1]
+
+    def hints(self):
+        name, a, b = self._edge()
+        return [
+            r"At an end, the derivative of a Bézier curve depends only on the end point and its "
+            r"neighbour: $C'(0) = n\,(P_1 - P_0)$ and $C'(1) = n\,(P_n - P_{n-1})$.",
+            rf"Here you need $C'({self.end})$, so the edge is ${name} = {_vec(a)} - {_vec(b)} = "
+            rf"{_vec(a - b)}$, in the direction of travel.",
+            rf"The curve has degree $n = {self.n}$ ({self.n + 1} control points): multiply the "
+            r"edge by it, and do not normalise.",
+        ]
+
+    def worked(self):
+        name, a, b = self._edge()
+        edge = a - b
+        derivative = self.n * edge
+        at = "start" if self.end == 0 else "end"
+        return Worked([
+            rf"The {at} of the curve is $t = {self.end}$; there $C'({self.end}) = n\,({name})$ "
+            rf"with $n = {self.n}$.",
+            rf"The edge: ${name} = {_vec(a)} - {_vec(b)} = {_vec(edge)}$.",
+            rf"Times the degree: $C'({self.end}) = {self.n} \cdot {_vec(edge)} = "
+            rf"{_vec(derivative)}$.",
+        ], derivative)
+
     def statement(self):
         kind = "quadratic" if self.n == 2 else "cubic"
         at = "start" if self.end == 0 else "end"
@@ -351,6 +472,37 @@ class BezierSubdivision(_Points):
                     r"$(1 - t)\,P_i + t\,P_{i+1}$, the first point weighted by $1 - t$.",
                     "t swapped"),
         ]
+
+    def hints(self):
+        n, t = self.n, self.t
+        levels = _casteljau_by_hand(self.P, t)
+        if n == 3:
+            last = (rf"The left polygon runs from $P_0 = {_vec(self.P[0])}$ to the curve point "
+                    rf"$C(t) = P_0^3 = {_vec(levels[3][0])}$; its inner points are $P_0^1$ "
+                    r"and $P_0^2$, the first points of levels 1 and 2.")
+        else:
+            last = (rf"The left polygon runs from $P_0 = {_vec(self.P[0])}$ to the curve point "
+                    rf"$C(t) = P_0^2 = {_vec(levels[2][0])}$, with $P_0^1$ in between.")
+        return [
+            r"Subdividing is de Casteljau's triangle read along one edge: the control points of "
+            r"the left part are the **first** points of the levels, "
+            r"$P_0^0, P_0^1, \dots, P_0^n$.",
+            rf"Run the triangle for $t = {_frac(t)}$: each new point is "
+            rf"${_frac(1 - t)}$ of the first plus ${_frac(t)}$ of the second; level 1 starts "
+            rf"with $P_0^1 = {_vec(levels[1][0])}$.",
+            last,
+        ]
+
+    def worked(self):
+        n, t = self.n, self.t
+        levels = _casteljau_by_hand(self.P, t)
+        steps = [rf"Run de Casteljau's triangle for $t = {_frac(t)}$ on {_points_words(self.P)}."]
+        steps += [_level_words(levels, r, t) for r in range(1, n + 1)]
+        left = np.array([level[0] for level in levels])
+        steps.append(r"The left part's control points are the first point of each level: "
+                     + ", ".join(rf"$P_0^{{{r}}} = {_vec(p)}$" for r, p in enumerate(left))
+                     + ".")
+        return Worked(steps, left)
 
     def statement(self):
         kind = "quadratic" if self.n == 2 else "cubic"
@@ -425,6 +577,39 @@ class DegreeElevation(_Points):
                             f"control point more: {self.n + 2} in all, the end points kept.",
                             "not elevated")
         return None
+
+    def hints(self):
+        n, P = self.n, self.P
+        weights = ", ".join(f"${_frac(i / (n + 1))}$" for i in range(1, n + 1))
+        q1 = P[0] / (n + 1) + n / (n + 1) * P[1]
+        return [
+            r"Raising the degree keeps the curve and its end points and adds one control point: "
+            r"$Q_0 = P_0$, $Q_{n+1} = P_n$, and in between "
+            r"$Q_i = \frac{i}{n+1}\,P_{i-1} + \left(1 - \frac{i}{n+1}\right) P_i$.",
+            rf"Here $n = {n}$, so the weights $\frac{{i}}{{n+1}}$ of the previous point are "
+            rf"{weights} for $i = 1, \dots, {n}$.",
+            rf"For example $Q_1 = {_frac(1 / (n + 1))}\,{_vec(P[0])} + "
+            rf"{_frac(n / (n + 1))}\,{_vec(P[1])} = {_vec(q1)}$.",
+        ]
+
+    def worked(self):
+        n, P = self.n, self.P
+        Q = [P[0]]
+        steps = [rf"The curve has degree $n = {n}$; the new one has $n + 1 = {n + 1}$ and "
+                 rf"{n + 2} control points. The ends stay: $Q_0 = P_0 = {_vec(P[0])}$, "
+                 rf"$Q_{{{n + 1}}} = P_{{{n}}} = {_vec(P[n])}$."]
+        inner = []
+        for i in range(1, n + 1):
+            a = i / (n + 1)
+            q = a * P[i - 1] + (1 - a) * P[i]
+            Q.append(q)
+            inner.append(rf"$Q_{i} = {_frac(a)}\,{_vec(P[i - 1])} + "
+                         rf"{_frac(1 - a)}\,{_vec(P[i])} = {_vec(q)}$")
+        Q.append(P[n])
+        steps.append("In between: " + "; ".join(inner) + ".")
+        steps.append(r"In order, $Q_0, \dots, Q_{" + str(n + 1) + "}$: "
+                     + ", ".join(f"${_vec(q)}$" for q in Q) + ".")
+        return Worked(steps, np.array(Q))
 
     def statement(self):
         n = self.n

@@ -6,10 +6,11 @@ Part of :mod:`course_lib.exercises.ch07`, which imports every exercise from here
 import numpy as np
 
 from ... import curves
-from ..core import (DECIMALS, UNANSWERED, Feedback, Mistake, close, data_note, has_placeholder,
-                    is_unanswered, pick)
-from . import (_POINT_2, _Chapter7, _control_polygon, _cox_de_boor_levels, _even_knots,
-               _floats_or_none, _inside_span, _integer_knots, _knots_words, _num, _points_words)
+from ..core import (DECIMALS, UNANSWERED, Feedback, Mistake, Worked, close, data_note,
+                    has_placeholder, is_unanswered, pick)
+from . import (_POINT_2, _Chapter7, _control_polygon, _cox_de_boor_levels, _de_boor_by_hand,
+               _even_knots, _floats_or_none, _frac, _inside_span, _integer_knots, _knots_words,
+               _num, _points_words, _span_of, _span_words, _vec)
 
 __all__ = [
     "ActiveControlPoints",
@@ -25,7 +26,7 @@ class ClampedKnotVector(_Chapter7):
 
     :math:`p + 1` zeros, the :math:`N - p - 1` interior knots :math:`\frac{1}{N-p}, \dots,
     \frac{N-p-1}{N-p}`, :math:`p + 1` ones: :math:`N + p + 1` knots for :math:`N` control
-    points.
+    points. Degrees 1 to 5, with 2 to 9 knot spans.
 
     Attributes: ``n_control`` (N), ``p`` (the degree).
 
@@ -43,9 +44,38 @@ class ClampedKnotVector(_Chapter7):
     what = "the knot vector"
 
     def draw(self, rng):
-        self.p = int(pick(rng, (2, 3)))
-        self.n_control = self.p + int(pick(rng, (2, 3, 4)))
+        self.p = int(pick(rng, (1, 2, 3, 4, 5)))
+        self.n_control = self.p + int(pick(rng, (2, 3, 4, 5, 6, 7, 8, 9)))
         self.expected = curves.clamped_knots(self.n_control, self.p)
+
+    def hints(self):
+        N, p = self.n_control, self.p
+        m = N - p
+        knots = "knot" if m == 2 else "knots"
+        return [
+            rf"Count first: $N$ control points and degree $p$ need $N + p + 1 = {N} + {p} + 1 "
+            rf"= {N + p + 1}$ knots.",
+            rf"Clamping repeats each end knot $p + 1 = {p + 1}$ times: {p + 1} zeros at the "
+            rf"start and {p + 1} ones at the end.",
+            rf"That leaves $N - p - 1 = {m - 1}$ interior {knots}, spaced evenly: the "
+            rf"$N - p = {m}$ knot spans of $[0, 1]$ each have length ${_frac(1 / m)}$.",
+        ]
+
+    def worked(self):
+        N, p = self.n_control, self.p
+        m = N - p
+        interior = [j / m for j in range(1, m)]
+        knots = [0.0] * (p + 1) + interior + [1.0] * (p + 1)
+        return Worked([
+            rf"The number of knots: $N + p + 1 = {N} + {p} + 1 = {N + p + 1}$.",
+            rf"The ends, repeated $p + 1 = {p + 1}$ times: {p + 1} zeros and {p + 1} ones, "
+            rf"{2 * (p + 1)} knots.",
+            rf"The remaining $N - p - 1 = {m - 1}$ interior knot{'s' if m > 2 else ''} split "
+            rf"$[0, 1]$ into $N - p = {m}$ equal spans: $\frac{{j}}{{{m}}}$ for "
+            rf"$j = 1, \dots, {m - 1}$, i.e. " + ", ".join(f"${_frac(x)}$" for x in interior)
+            + ".",
+            r"Together, in order: $U = (" + r",\ ".join(_frac(x) for x in knots) + ")$.",
+        ], np.array(knots))
 
     def _judge(self, answer):
         N, p = self.n_control, self.p
@@ -62,12 +92,13 @@ class ClampedKnotVector(_Chapter7):
         if np.any(np.diff(value) < -1e-9):
             return Feedback("wrong", "The knots must never decrease: a knot vector is a "
                             "non-decreasing sequence.", "decreasing")
-        first = int(np.sum(np.isclose(value, value[0], atol=1e-9)))
-        last = int(np.sum(np.isclose(value, value[-1], atol=1e-9)))
+        first = int(np.sum(value == value[0]))             # the multiplicities of the ends
+        last = int(np.sum(value == value[-1]))
         count = (f" With {N} control points and degree {p} there are "
                  f"$N + p + 1 = {N} + {p} + 1 = {want}$ knots.")
         if first == p and last == p:
-            return Feedback("wrong", f"The end knots appear {p} times each; a clamped knot "
+            times = "once" if p == 1 else f"{p} times"
+            return Feedback("wrong", f"The end knots appear {times} each; a clamped knot "
                             f"vector repeats them $p + 1 = {p + 1}$ times. Then the first "
                             "basis function is 1 at the start (the curve begins at $P_0$) and "
                             "the last one is 1 at the end." + count, "p copies at the ends")
@@ -150,6 +181,76 @@ class CoxDeBoorBasis(_Chapter7):
         self.expected = curves.bspline_basis(self.knots, self.p, self.t)
         self._lower = _cox_de_boor_levels(self.knots, self.p, self.t)[self.p - 1]
 
+    def _triangle(self):
+        """The non-zero basis functions of each degree at t, as the recursion gives them:
+        a list (degree 0 first) of {i: (value, the LaTeX of its computation)}."""
+        u, p, t = self.knots, self.p, self.t
+        k = _span_of(u, t)
+        levels = [{k: (1.0, "1")}]
+        for r in range(1, p + 1):
+            prev, level = levels[-1], {}
+            for i in range(k - r, k + 1):
+                value, names, numbers = 0.0, [], []
+                if i in prev:                        # (t - u_i) / (u_{i+r} - u_i) N_{i,r-1}
+                    f = rf"\frac{{{_num(t - u[i])}}}{{{_num(u[i + r] - u[i])}}}"
+                    value += (t - u[i]) / (u[i + r] - u[i]) * prev[i][0]
+                    names.append(rf"{f}\,N_{{{i},{r - 1}}}")
+                    numbers.append(rf"{f} \cdot {_num(prev[i][0], 4)}")
+                if i + 1 in prev:                    # (u_{i+r+1} - t) / (...) N_{i+1,r-1}
+                    g = (rf"\frac{{{_num(u[i + r + 1] - t)}}}"
+                         rf"{{{_num(u[i + r + 1] - u[i + 1])}}}")
+                    value += ((u[i + r + 1] - t) / (u[i + r + 1] - u[i + 1])
+                              * prev[i + 1][0])
+                    names.append(rf"{g}\,N_{{{i + 1},{r - 1}}}")
+                    numbers.append(rf"{g} \cdot {_num(prev[i + 1][0], 4)}")
+                level[i] = (value, " + ".join(names) + " = " + " + ".join(numbers))
+            levels.append(level)
+        return k, levels
+
+    @staticmethod
+    def _level_text(level, r):
+        return ", ".join(rf"$N_{{{i},{r}}}(t) = {_num(v, 4)}$" for i, (v, _) in level.items())
+
+    def hints(self):
+        p, t = self.p, self.t
+        k, levels = self._triangle()
+        if p == 1:
+            last = (rf"Degree 0 gives only $N_{{{k},0}}(t) = 1$, so degree 1 has two non-zero "
+                    rf"values: $N_{{{k - 1},1}}(t) = \frac{{u_{{{k + 1}}} - t}}"
+                    rf"{{u_{{{k + 1}}} - u_{{{k}}}}}$ and $N_{{{k},1}}(t) = "
+                    rf"\frac{{t - u_{{{k}}}}}{{u_{{{k + 1}}} - u_{{{k}}}}}$.")
+        else:
+            last = (rf"At degree {p - 1} the non-zero values are "
+                    + self._level_text(levels[p - 1], p - 1)
+                    + rf"; one more round of the recursion gives degree {p}.")
+        return [
+            r"Start at degree 0: exactly one $N_{i,0}(t)$ is 1, the one of the knot span "
+            r"$[u_i, u_{i+1})$ that contains $t$. Each degree up spreads the value over one more "
+            r"function, and at every degree the values add up to 1.",
+            _span_words(self.knots, k, t) + rf": $N_{{{k},0}}(t) = 1$, and at degree $p = {p}$ "
+            rf"only $N_{{{k - p},{p}}}, \dots, N_{{{k},{p}}}$ can be non-zero; the others are "
+            r"0 without any computation. A fraction whose denominator is 0 counts as 0.",
+            last,
+        ]
+
+    def worked(self):
+        p, t, N = self.p, self.t, self.n_control
+        k, levels = self._triangle()
+        steps = [_span_words(self.knots, k, t) + rf": degree 0 is $N_{{{k},0}}(t) = 1$ "
+                 "and 0 for every other $i$."]
+        for r in range(1, p + 1):
+            steps.append(rf"Degree {r}: only $N_{{{k - r},{r}}}, \dots, N_{{{k},{r}}}$ can be "
+                         "non-zero; the terms with a zero factor are left out. "
+                         + "; ".join(rf"$N_{{{i},{r}}}(t) = {text} = {_num(v, 4)}$"
+                                     for i, (v, text) in levels[r].items()) + ".")
+        values = np.zeros(N)
+        for i, (v, _) in levels[p].items():
+            values[i] = v
+        steps.append(rf"All {N} values, $N_{{i,{p}}}(t)$ at position $i$ (0 outside "
+                     rf"$i = {k - p}, \dots, {k}$); they add up to "
+                     rf"${_num(values.sum(), 4)}$.")
+        return Worked(steps, values)
+
     def mistakes(self):
         e = self.expected
         shift = (r"Your values are in the wrong places: the index is off by one. "
@@ -200,13 +301,16 @@ class CoxDeBoorBasis(_Chapter7):
 class BasisSupport(_Chapter7):
     r"""The support :math:`[u_i, u_{i+p+1}]` of one B-spline basis function :math:`N_{i,p}`.
 
+    The knots are whole numbers, and so are the two ends: they are compared exactly (``3.0`` is
+    the whole number 3).
+
     Attributes: ``knots``, ``p``, ``i``.
 
     Examples
     --------
     >>> ex = BasisSupport(seed=9)
-    >>> ex.check(ex.expected).status
-    'correct'
+    >>> ex.check(ex.expected).status, ex.check(ex.expected.astype(float)).status
+    ('correct', 'correct')
     >>> u, i, p = ex.knots, ex.i, ex.p
     >>> ex.check([u[i], u[i + p]]).diagnosis
     'one span short'
@@ -220,11 +324,34 @@ class BasisSupport(_Chapter7):
 
     def draw(self, rng):
         self.p = int(pick(rng, (1, 2, 3)))
-        n_control = self.p + int(pick(rng, (3, 4)))
-        self.knots = _integer_knots(rng, n_control, self.p)
+        n_control = self.p + int(pick(rng, (3, 4, 5, 6)))
+        self.knots = _integer_knots(rng, n_control, self.p, gaps=(1, 1, 2, 3))
         self.i = int(rng.integers(0, n_control))
         u, i, p = self.knots, self.i, self.p
-        self.expected = np.array([u[i], u[i + p + 1]])
+        self.expected = np.array([u[i], u[i + p + 1]]).astype(int)     # whole: compared exactly
+
+    def hints(self):
+        u, i, p = self.knots, self.i, self.p
+        return [
+            r"$N_{i,p}$ is built from the degree-0 functions $N_{i,0}, \dots, N_{i+p,0}$, the "
+            r"indicators of $p + 1$ consecutive knot spans: that is where it can be non-zero.",
+            rf"So $N_{{i,p}}$ lives on $[u_i, u_{{i+p+1}})$; here the end index is "
+            rf"$i + p + 1 = {i} + {p} + 1 = {i + p + 1}$.",
+            rf"Look the knots up in $U$, counting from 0: $u_{{{i}}} = {_num(u[i])}$; the end is "
+            rf"entry {i + p + 1}.",
+        ]
+
+    def worked(self):
+        u, i, p = self.knots, self.i, self.p
+        start, end = u[i], u[i + p + 1]
+        return Worked([
+            rf"$N_{{{i},{p}}}$ is made of $N_{{{i},0}}, \dots, N_{{{i + p},0}}$: it is non-zero "
+            rf"on the $p + 1 = {p + 1}$ knot spans from $u_{{{i}}}$ to "
+            rf"$u_{{i+p+1}} = u_{{{i + p + 1}}}$.",
+            rf"In $U$ (counted from 0): $u_{{{i}}} = {_num(start)}$ and "
+            rf"$u_{{{i + p + 1}}} = {_num(end)}$.",
+            rf"The support is $[{_num(start)}, {_num(end)}]$.",
+        ], [int(start), int(end)])
 
     def acceptable(self):
         u, i, p = self.knots, self.i, self.p
@@ -295,9 +422,11 @@ class ActiveControlPoints(_Chapter7):
     r"""The control points that shape a B-spline curve at t: :math:`P_{k-p}, \dots, P_k`.
 
     With :math:`t \in [u_k, u_{k+1})`, only :math:`N_{k-p,p}, \dots, N_{k,p}` are non-zero
-    there (local control).
+    there (local control). The indices are whole numbers, compared exactly (``3.0`` is 3); the
+    span one too low or one too high (:math:`k \mp 1`) is diagnosed as ``"span k-1"`` or
+    ``"span k+1"``.
 
-    Attributes: ``knots``, ``p``, ``n_control``, ``t``.
+    Attributes: ``knots``, ``p``, ``n_control``, ``t``, ``span`` (k).
 
     Examples
     --------
@@ -306,6 +435,15 @@ class ActiveControlPoints(_Chapter7):
     'correct'
     >>> ex.check(list(range(ex.n_control))).diagnosis
     'global control'
+    >>> k, p = ex.span, ex.p
+    >>> ex.check([float(i) for i in range(k - p, k + 1)]).status
+    'correct'
+    >>> ex.check(list(range(k - p - 1, k))).diagnosis          # P_{k-p-1}, ..., P_{k-1}
+    'span k-1'
+    >>> ex = ActiveControlPoints(seed=13)
+    >>> k, p = ex.span, ex.p
+    >>> ex.check(list(range(k - p + 1, k + 2))).diagnosis      # P_{k-p+1}, ..., P_{k+1}
+    'span k+1'
     >>> ex.check(...).status, ex.check("all").status
     ('unanswered', 'invalid')
     """
@@ -315,27 +453,59 @@ class ActiveControlPoints(_Chapter7):
 
     def draw(self, rng):
         self.p = int(pick(rng, (1, 2, 3)))
-        self.n_control = self.p + int(pick(rng, (3, 4, 5)))
+        self.n_control = self.p + int(pick(rng, (3, 4, 5, 6, 7)))
         self.knots = _integer_knots(rng, self.n_control, self.p)
         self.t = _inside_span(rng, self.knots, self.p)
         self.span = curves.find_span(self.knots, self.p, self.t)
         k, p = self.span, self.p
         self.expected = set(range(k - p, k + 1))
 
+    def hints(self):
+        p, t = self.p, self.t
+        k = _span_of(self.knots, t)
+        return [
+            r"Local control: $N_{i,p}$ is non-zero only on $[u_i, u_{i+p+1})$, so at one $t$ "
+            rf"just $p + 1 = {p + 1}$ basis functions, and so {p + 1} control points, are "
+            "active.",
+            r"Find the knot span $[u_k, u_{k+1})$ that contains $t$, with $u_k \le t < u_{k+1}$ "
+            r"(counting the knots from 0; with repeated knots take the last $k$ with "
+            r"$u_k \le t$). The active control points are then $P_{k-p}, \dots, P_k$.",
+            _span_words(self.knots, k, t) + ".",
+        ]
+
+    def worked(self):
+        p, t = self.p, self.t
+        k = _span_of(self.knots, t)
+        active = list(range(k - p, k + 1))
+        return Worked([
+            _span_words(self.knots, k, t) + ".",
+            rf"The non-zero basis functions there are $N_{{k-p,p}}, \dots, N_{{k,p}}$, "
+            rf"with $k - p = {k - p}$; so the {p + 1} active control points are "
+            + ", ".join(f"$P_{{{i}}}$" for i in active) + ".",
+        ], active)
+
     def mistakes(self):
         k, p, N = self.span, self.p, self.n_control
-        shifted = (r"Off by one: with $t$ in the span $[u_k, u_{k+1})$ the active control "
-                   r"points are $P_{k-p}, \dots, P_k$ (the basis function $N_{i,p}$ is "
-                   r"non-zero on $[u_i, u_{i+p+1})$, so it covers the span $k$ exactly when "
-                   r"$k - p \le i \le k$).")
+        u, t = self.knots, self.t
+        where = (rf"Here $u_{{{k}}} = {_num(u[k])} \le t = {_num(t)} < u_{{{k + 1}}} = "
+                 rf"{_num(u[k + 1])}$, so $k = {k}$ and the active control points are "
+                 rf"$P_{{{k - p}}}, \dots, P_{{{k}}}$.")
+        span_up = (r"You took the knot span one too far, $k + 1$: the control points "
+                   r"$P_{k-p+1}, \dots, P_{k+1}$. The span of $t$ is $[u_k, u_{k+1})$ with "
+                   r"$u_k \le t$, counting the knots from 0 (naming the span by its right end, "
+                   r"or counting from 1, gives $k + 1$). " + where)
+        span_down = (r"You took the knot span one too low, $k - 1$: the control points "
+                     r"$P_{k-p-1}, \dots, P_{k-1}$. That span, $[u_{k-1}, u_k)$, ends before "
+                     r"$t$; the span of $t$ starts at the **last** knot at or below $t$ and "
+                     r"ends at the first knot above it. " + where)
         few = (r"One control point is missing: a B-spline of degree $p$ has $p + 1$ active "
                r"control points on every knot span, $P_{k-p}, \dots, P_k$ for the span "
                r"$[u_k, u_{k+1})$.")
         many = (r"One control point too many: exactly $p + 1$ control points act on a knot "
                 r"span, $P_{k-p}, \dots, P_k$ for $t \in [u_k, u_{k+1})$.")
         candidates = [
-            Mistake(set(range(k - p + 1, k + 2)), shifted, "off by one", numeric=False),
-            Mistake(set(range(k - p - 1, k)), shifted, "off by one", numeric=False),
+            Mistake(set(range(k - p + 1, k + 2)), span_up, "span k+1", numeric=False),
+            Mistake(set(range(k - p - 1, k)), span_down, "span k-1", numeric=False),
             Mistake(set(range(k - p + 1, k + 1)), few, "one too few", numeric=False),
             Mistake(set(range(k - p, k)), few, "one too few", numeric=False),
             Mistake(set(range(k - p - 1, k + 1)), many, "one too many", numeric=False),
@@ -390,6 +560,12 @@ class ActiveControlPoints(_Chapter7):
 class BSplinePoint(_Chapter7):
     r"""A point of a B-spline curve with whole-number knots, by de Boor's algorithm.
 
+    The slips anticipated include a knot span off by one: de Boor's algorithm run on the span
+    :math:`k - 1` or :math:`k + 1` instead of :math:`k` (``"span k-1"``, ``"span k+1"``: the
+    polynomial piece of the neighbouring span, extrapolated to t), and the right weights put on
+    the control points :math:`P_{k-p+1}, \dots, P_{k+1}` (or :math:`P_{k-p-1}, \dots,
+    P_{k-1}`), ``"points shifted"``.
+
     Attributes: ``P``, ``knots``, ``p``, ``t``.
 
     Examples
@@ -417,13 +593,83 @@ class BSplinePoint(_Chapter7):
         self.t = _inside_span(rng, self.knots, self.p)
         self.expected = curves.bspline(self.P, self.knots, self.p, self.t)
 
+    def _de_boor_steps(self, levels):
+        """The worked solution's lines for de Boor's levels (from :func:`_de_boor_by_hand`)."""
+        u, p, t = self.knots, self.p, self.t
+        steps = []
+        for r, level in enumerate(levels[1:], start=1):
+            parts = []
+            for i, alpha, point in level:
+                parts.append(rf"$\alpha_{{{i}}} = \frac{{{_num(t)} - {_num(u[i])}}}"
+                             rf"{{{_num(u[i + p + 1 - r])} - {_num(u[i])}}} = "
+                             rf"{_frac(alpha)}$, $d_{{{i}}}^{{{r}}} = {_vec(point)}$")
+            steps.append(rf"Level {r} ($\alpha_i = \frac{{t - u_i}}{{u_{{i+{p + 1 - r}}} - "
+                         r"u_i}$, $d_i^r = (1 - \alpha_i)\,d_{i-1}^{r-1} + \alpha_i\,"
+                         r"d_i^{r-1}$): " + "; ".join(parts) + ".")
+        return steps
+
+    def hints(self):
+        P, u, p, t = self.P, self.knots, self.p, self.t
+        k = _span_of(u, t)
+        levels = _de_boor_by_hand(P, u, p, t, k)
+        start = ", ".join(rf"$P_{{{i}}} = {_vec(P[i])}$" for i in range(k - p, k + 1))
+        first = "; ".join(rf"$\alpha_{{{i}}} = {_frac(alpha)}$, $d_{{{i}}}^1 = {_vec(point)}$"
+                          for i, alpha, point in levels[1])
+        return [
+            r"Only $p + 1$ control points act at $t$: find the knot span $[u_k, u_{k+1})$ that "
+            r"contains $t$ and start de Boor's algorithm from $P_{k-p}, \dots, P_k$.",
+            _span_words(u, k, t) + f"; start from {start}. At level $r$ blend neighbours, "
+            r"$d_i^r = (1 - \alpha_i)\,d_{i-1}^{r-1} + \alpha_i\,d_i^{r-1}$ for "
+            r"$i = k - p + r, \dots, k$, with $\alpha_i = \frac{t - u_i}{u_{i+p+1-r} - u_i}$.",
+            "Level 1 here: " + first + (". With $p = 1$ that is already the point." if p == 1
+                                        else f". {p - 1} more level{'s' if p > 2 else ''} "
+                                        "to go, each one point shorter."),
+        ]
+
+    def worked(self):
+        P, u, p, t = self.P, self.knots, self.p, self.t
+        k = _span_of(u, t)
+        levels = _de_boor_by_hand(P, u, p, t, k)
+        steps = [_span_words(u, k, t) + rf": the active control points are "
+                 rf"$d_i^0 = P_i$ for $i = {k - p}, \dots, {k}$: "
+                 + ", ".join(rf"${_vec(point)}$" for _, _, point in levels[0]) + "."]
+        steps += self._de_boor_steps(levels)
+        point = levels[p][0][2]
+        steps.append(rf"The last level has one point: $C({_num(t)}) = d_{{{k}}}^{{{p}}} = "
+                     rf"{_vec(point)}$.")
+        return Worked(steps, point)
+
     def mistakes(self):
         P, u, p, t = self.P, self.knots, self.p, self.t
         n_control = len(P)
         a, b = u[p], u[n_control]
         k = curves.find_span(u, p, t)
         local = (t - u[k]) / (u[k + 1] - u[k])
-        return [
+        found = []
+        where = (rf"The span of $t$ is $[u_k, u_{{k+1}})$ with $u_k \le t < u_{{k+1}}$, counting "
+                 rf"the knots from 0: here $u_{{{k}}} = {_num(u[k])} \le {_num(t)} < "
+                 rf"u_{{{k + 1}}} = {_num(u[k + 1])}$, so $k = {k}$ and de Boor's algorithm "
+                 rf"starts from $P_{{{k - p}}}, \dots, P_{{{k}}}$.")
+        for other, key, words in ((k + 1, "span k+1", "one too far, $k + 1$"),
+                                  (k - 1, "span k-1", "one too low, $k - 1$")):
+            if not p <= other < n_control:
+                continue
+            levels = _de_boor_by_hand(P, u, p, t, other)
+            if levels is None:                      # an empty span: nobody computes that
+                continue
+            found.append(Mistake(levels[p][0][2], rf"You ran de Boor's algorithm on the knot "
+                                 rf"span {words}: its control points and ratios belong to the "
+                                 r"neighbouring polynomial piece, which you evaluated outside "
+                                 r"its own span (one of your $\alpha_i$ was then below 0 or "
+                                 r"above 1: a sure sign of the wrong span). " + where, key))
+        weights = curves.bspline_basis(u, p, t)
+        for shift in (1, -1):
+            if 0 <= k - p + shift and k + shift < n_control:
+                moved = weights[k - p:k + 1] @ P[k - p + shift:k + 1 + shift]
+                found.append(Mistake(moved, r"Your weights are right, but they sit on the wrong "
+                                     r"control points, shifted by one: $N_{i,p}(t)$ belongs to "
+                                     r"$P_i$ itself. " + where, "points shifted"))
+        return found + [
             Mistake(curves.bezier(P, (t - a) / (b - a)), r"You evaluated the Bézier curve of "
                     r"all the control points (at the same fraction of the domain). A B-spline "
                     r"blends them with the B-spline basis functions of its knots, not with "

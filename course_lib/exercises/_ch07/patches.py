@@ -6,8 +6,8 @@ Part of :mod:`course_lib.exercises.ch07`, which imports every exercise from here
 import numpy as np
 
 from ... import curves, surfaces
-from ..core import Mistake, data_note, pick
-from . import _POINT_3, _T_VALUES, _Chapter7, _frac, _vec
+from ..core import Mistake, Worked, data_note, pick
+from . import _POINT_3, _T_VALUES, _Chapter7, _frac, _num, _vec
 
 __all__ = [
     "BezierSurfacePoint",
@@ -75,6 +75,42 @@ class BezierSurfacePoint(_Chapter7):
                                  r"$B_i^m(u)\, B_j^n(v)$ of the patch's degrees.",
                                  "corners only"))
         return found
+
+    @staticmethod
+    def _bernstein(n, t):
+        """B_0^n(t), ..., B_n^n(t) for n = 1 or 2, by the formulas."""
+        if n == 1:
+            return np.array([1 - t, t])
+        return np.array([(1 - t) ** 2, 2 * t * (1 - t), t ** 2])
+
+    def hints(self):
+        m, n, u, v = self.m, self.n, self.u, self.v
+        bu, bv = self._bernstein(m, u), self._bernstein(n, v)
+        rows = [bv @ self.grid[i] for i in range(m + 1)]
+        return [
+            r"A tensor-product patch: $P_{ij}$ gets the weight $B_i^m(u)\, B_j^n(v)$. Work in two "
+            r"rounds: first blend along $v$ within each row $i$, then blend the results along "
+            r"$u$.",
+            rf"Here $B^{m}(u) = {_vec(bu, 4)}$ at $u = {_frac(u)}$ and $B^{n}(v) = "
+            rf"{_vec(bv, 4)}$ at $v = {_frac(v)}$.",
+            r"Row by row, $Q_i = \sum_j B_j^n(v)\, P_{ij}$: "
+            + ", ".join(rf"$Q_{i} = {_vec(q)}$" for i, q in enumerate(rows))
+            + r". Now $S(u, v) = \sum_i B_i^m(u)\, Q_i$.",
+        ]
+
+    def worked(self):
+        m, n, u, v = self.m, self.n, self.u, self.v
+        bu, bv = self._bernstein(m, u), self._bernstein(n, v)
+        rows = [sum(bv[j] * self.grid[i, j] for j in range(n + 1)) for i in range(m + 1)]
+        point = sum(bu[i] * rows[i] for i in range(m + 1))
+        return Worked([
+            rf"The Bernstein values: $B^{m}({_frac(u)}) = {_vec(bu, 4)}$ (degree {m} in $u$), "
+            rf"$B^{n}({_frac(v)}) = {_vec(bv, 4)}$ (degree {n} in $v$).",
+            r"Blend each row along $v$, $Q_i = \sum_j B_j^n(v)\, P_{ij}$: "
+            + "; ".join(rf"$Q_{i} = {_vec(q)}$" for i, q in enumerate(rows)) + ".",
+            r"Blend the rows along $u$: $S = " + " + ".join(
+                rf"{_num(bu[i], 4)}\,Q_{i}" for i in range(m + 1)) + rf" = {_vec(point)}$.",
+        ], point)
 
     def statement(self):
         m, n = self.m, self.n

@@ -3,7 +3,7 @@
 Part of :mod:`course_lib.exercises.ch07`, which imports every exercise from here.
 """
 
-from ..core import Feedback, data_note, pick, read_names
+from ..core import Feedback, Worked, data_note, pick, read_names
 from . import _Chapter7
 
 __all__ = [
@@ -122,6 +122,32 @@ _PROPERTY_REASONS = {
 }
 
 
+#: What each property needs, as the worked solutions reason: None (every type here has it),
+#: or the trait that decides it and whether the type must have it ("spline": a B-spline or
+#: NURBS; "rational": with weights; "surface").
+_NEEDS = {
+    "convex hull": None,
+    "affine invariance": None,
+    "endpoint interpolation": None,
+    "strong convex hull": ("spline", True),
+    "local control": ("spline", True),
+    "independent degree": ("spline", True),
+    "pseudo-local control": ("spline", False),
+    "projective invariance": ("rational", True),
+    "exact conics": ("rational", True),
+    "variation diminishing": ("surface", False),
+}
+#: How many properties of the menu a question shows.
+_SHOWN = 6
+
+
+def _traits(kind):
+    """{"spline", "rational", "surface"} -> whether `kind` has it, read from its name."""
+    return {"spline": "B-spline" in kind or "NURBS" in kind,
+            "rational": "rational" in kind or "NURBS" in kind,
+            "surface": kind.endswith("surface")}
+
+
 def _property_reason(name, kind, holds):
     """Why property `name` holds (holds=True) or fails for `kind`: a sentence for feedback."""
     if_holds, if_fails = _PROPERTY_REASONS[name]
@@ -143,50 +169,93 @@ def _normalise_property(text):
 class CurveProperties(_Chapter7):
     r"""Which of the listed properties hold for a given kind of curve or surface.
 
-    The answer is a set of names from :data:`PROPERTY_MENU`; each property missing or wrongly
-    claimed is explained. Its diagnosis is ``"missing: <name>"`` or ``"extra: <name>"`` for
-    the first such property in menu order.
+    Each question shows 6 of the 10 properties of :data:`PROPERTY_MENU` (at least one that holds
+    and one that does not); the answer is the set of those that hold (a property of the menu
+    that is not shown may be listed too when it holds). Each property missing or wrongly
+    claimed is explained. Its diagnosis is ``"missing: <name>"`` or
+    ``"extra: <name>"`` for the first such property in menu order.
 
-    Attributes: ``kind`` (e.g. ``"NURBS curve"``), ``menu`` (the property names).
+    Attributes: ``kind`` (e.g. ``"NURBS curve"``), ``menu`` (the names of the properties shown).
 
     Examples
     --------
     >>> ex = CurveProperties(seed=2)
-    >>> ex.kind
-    'Bézier surface'
-    >>> ex.check(sorted(ex.expected)).status
-    'correct'
-    >>> ex.check(sorted(ex.expected | {"variation diminishing"})).diagnosis
-    'extra: variation diminishing'
+    >>> len(ex.menu), ex.check(sorted(ex.expected)).status
+    (6, 'correct')
+    >>> extra = next(name for name in ex.menu if name not in ex.expected)
+    >>> ex.check(sorted(ex.expected | {extra})).diagnosis == "extra: " + extra
+    True
     >>> ex.check(["convex hull", "smoothness"]).status
     'invalid'
     """
 
     title = "Which properties hold?"
     answer_form = "custom"
-    menu = tuple(PROPERTY_MENU)
 
     def draw(self, rng):
         self.kind = str(pick(rng, _KINDS))
-        self.expected = _properties_of(self.kind)
+        names = tuple(PROPERTY_MENU)
+        chosen = set(rng.choice(len(names), size=_SHOWN, replace=False).tolist())
+        self.menu = tuple(name for k, name in enumerate(names) if k in chosen)
+        self.expected = _properties_of(self.kind) & set(self.menu)
+
+    def acceptable(self):
+        return 1 <= len(self.expected) <= len(self.menu) - 1
+
+    def hints(self):
+        traits = _traits(self.kind)
+        words = [("a spline (B-spline or NURBS)" if traits["spline"] else
+                  "a Bézier type, one polynomial piece"),
+                 "rational (it has weights)" if traits["rational"] else "not rational",
+                 "a surface" if traits["surface"] else "a curve"]
+        return [
+            r"Sort the type by three questions: is it a spline (B-spline, NURBS) or a Bézier "
+            r"type? Does it have weights (rational)? Is it a curve or a surface? Each property "
+            r"depends on one of these, or holds for every type here.",
+            r"Every type here has convex hull, affine invariance and endpoint interpolation "
+            r"(clamped knots). Strong convex hull, local control and independent degree come "
+            r"with splines, pseudo-local control with Bézier types; projective invariance and "
+            r"exact conics need weights; variation diminishing holds for curves only.",
+            f"A {self.kind} is " + ", ".join(words) + ". Go down the list with that.",
+        ]
+
+    def worked(self):
+        traits = _traits(self.kind)
+        steps = [f"A {self.kind}: spline {'yes' if traits['spline'] else 'no'}, rational "
+                 f"{'yes' if traits['rational'] else 'no'}, surface "
+                 f"{'yes' if traits['surface'] else 'no'}."]
+        holding = []
+        for name in self.menu:
+            need = _NEEDS[name]
+            holds = need is None or traits[need[0]] == need[1]
+            if holds:
+                holding.append(name)
+            steps.append(("Yes: " if holds else "No: ")
+                         + _property_reason(name, self.kind, holds))
+        return Worked(steps, sorted(holding))
 
     def separated(self, mistakes):
         return True
 
     def _read(self, answer):
-        form = ("Give a list of property names from the menu, e.g. "
-                "`['convex hull', 'affine invariance']` (`[]` if none holds).")
-        return read_names(answer, self.menu, form, "is not on the menu. The names are:",
-                          _normalise_property)
+        form = ("Give a list of property names from the table, e.g. "
+                f"`{[self.menu[0]]!r}` (`[]` if none holds).")
+        return read_names(answer, tuple(PROPERTY_MENU), form,
+                          "is not a property of the menu. The names are:", _normalise_property)
 
     def _judge(self, answer):
         names = self._read(answer)
         if isinstance(names, Feedback):
             return names
-        if names == self.expected:
-            return Feedback("correct", f"Exactly these {len(names)} properties hold for a "
-                            f"{self.kind}.")
-        wrong = [name for name in self.menu if (name in names) != (name in self.expected)]
+        # A property of the full menu that the table does not show may be named too: one that
+        # holds is simply true (it is not asked about), one that fails is an error.
+        holds = _properties_of(self.kind)
+        wrong = [name for name in PROPERTY_MENU
+                 if ((name in names) != (name in self.expected) if name in self.menu
+                     else name in names and name not in holds)]
+        if not wrong:
+            return Feedback("correct", f"Exactly these {len(self.expected)} properties of the "
+                            f"table hold for a {self.kind}.")
         first = wrong[0]
         key = ("missing: " if first in self.expected else "extra: ") + first
         missing = [n for n in wrong if n in self.expected]
@@ -201,13 +270,14 @@ class CurveProperties(_Chapter7):
         return Feedback("wrong", f"{'; '.join(summary)}. {reasons}", key)
 
     def statement(self):
-        rows = "\n".join(f"| `{name}` | {meaning} |" for name, meaning in PROPERTY_MENU.items())
+        rows = "\n".join(f"| `{name}` | {PROPERTY_MENU[name]} |" for name in self.menu)
         article = "an" if self.kind[0] in "AEIOU" else "a"
         return (
             rf"Which of the following properties hold for {article} **{self.kind}**? "
             r"B-splines and NURBS have clamped knot vectors, rational types have positive "
             r"weights, and each B-spline has more control points than its degree plus one." "\n\n"
             "| name | meaning |\n|---|---|\n" + rows + "\n\n"
-            r"**Answer:** the list of the names of all properties that hold, e.g. "
-            r"`['convex hull', 'affine invariance']` (the order does not matter)." "\n\n"
+            r"**Answer:** the list of the names of all properties in the table that hold, "
+            f"spelled as in the table, e.g. `{[self.menu[0]]!r}` (the order does not matter)."
+            "\n\n"
             + data_note("kind", "menu"))

@@ -8,7 +8,7 @@ import math
 import numpy as np
 
 from ... import curves
-from ..core import (DECIMALS, UNANSWERED, Feedback, Mistake, data_note, diagnose_parts,
+from ..core import (DECIMALS, UNANSWERED, Feedback, Mistake, Worked, data_note, diagnose_parts,
                     has_placeholder, parts_separated, pick)
 from . import _POINT_2, _T_VALUES, _Chapter7, _control_polygon, _frac, _num, _points_words, _vec
 
@@ -69,6 +69,43 @@ class RationalBezierPoint(_Chapter7):
                     r"$C(t) = \frac{\sum_i B_i^2(t)\, w_i P_i}{\sum_i B_i^2(t)\, w_i}$.",
                     "weights ignored"),
         ]
+
+    def _blend(self):
+        """The Bernstein values at t and the products B_i w_i, by hand."""
+        t = self.t
+        b = np.array([(1 - t) ** 2, 2 * t * (1 - t), t ** 2])
+        return b, b * self.w
+
+    def hints(self):
+        b, bw = self._blend()
+        return [
+            r"A rational Bézier point is a weighted average of the control points: each "
+            r"$P_i$ gets the weight $B_i^2(t)\, w_i$, and you divide by the sum of those "
+            r"weights, $\sum_i B_i^2(t)\, w_i$.",
+            rf"At $t = {_frac(self.t)}$ the Bernstein values are $((1 - t)^2,\ 2t(1 - t),\ t^2) "
+            rf"= {_vec(b, 4)}$; times the weights $w = {_vec(self.w)}$ they become "
+            rf"${_vec(bw, 4)}$.",
+            rf"The denominator is $\sum_i B_i^2(t)\, w_i = {_num(bw.sum(), 4)}$; the numerator "
+            rf"is $\sum_i B_i^2(t)\, w_i P_i$ with these same numbers.",
+        ]
+
+    def worked(self):
+        b, bw = self._blend()
+        numerator = bw[0] * self.P[0] + bw[1] * self.P[1] + bw[2] * self.P[2]
+        denominator = bw.sum()
+        point = numerator / denominator
+        return Worked([
+            rf"The Bernstein polynomials at $t = {_frac(self.t)}$: $B_0^2 = (1 - t)^2 = "
+            rf"{_num(b[0], 4)}$, $B_1^2 = 2t(1 - t) = {_num(b[1], 4)}$, $B_2^2 = t^2 = "
+            rf"{_num(b[2], 4)}$.",
+            rf"Times the weights: $B_i^2 w_i = {_vec(bw, 4)}$; their sum, the denominator, is "
+            rf"${_num(denominator, 4)}$.",
+            rf"The numerator: ${_num(bw[0], 4)}\,{_vec(self.P[0])} + {_num(bw[1], 4)}\,"
+            rf"{_vec(self.P[1])} + {_num(bw[2], 4)}\,{_vec(self.P[2])} = "
+            rf"{_vec(numerator, 4)}$.",
+            rf"Divide: $C({_frac(self.t)}) = {_vec(numerator, 4)} / {_num(denominator, 4)} = "
+            rf"{_vec(point)}$.",
+        ], point)
 
     def statement(self):
         return (
@@ -176,6 +213,38 @@ class CircleArc(_Chapter7):
                               r"$C(\tfrac12) = \frac{P_0 + 2w P_1 + P_2}{2 + 2w}$; the result "
                               r"must lie on the circle, half-way along the arc.")
 
+    def hints(self):
+        th, half = self.theta_deg, self.theta_deg / 2
+        w = math.cos(math.radians(half))
+        return [
+            r"With $P_1$ where the end tangents meet, the circular arc has the weights "
+            r"$(1, w, 1)$ with $w = \cos\frac{\theta}{2}$, the cosine of half the opening angle.",
+            rf"Here $\theta = {th}^\circ$, so $w = \cos {_num(half)}^\circ = {_num(w, 4)}$. At "
+            r"$t = \tfrac12$ every Bernstein polynomial of degree 2 is known: "
+            r"$(\tfrac14, \tfrac12, \tfrac14)$.",
+            r"So $C(\tfrac12) = \frac{\frac14 P_0 + \frac12 w P_1 + \frac14 P_2}"
+            r"{\frac14 + \frac12 w + \frac14} = \frac{P_0 + 2w P_1 + P_2}{2 + 2w}$; here the "
+            rf"denominator is $2 + 2w = {_num(2 + 2 * w, 4)}$. Check: the point lies on the "
+            rf"circle, at the angle ${_num(self.alpha_deg + half)}^\circ$.",
+        ]
+
+    def worked(self):
+        half = self.theta_deg / 2
+        w = math.cos(math.radians(half))
+        numerator = self.P0 + 2 * w * self.P1 + self.P2
+        point = numerator / (2 + 2 * w)
+        distance = float(np.linalg.norm(point - self.center))
+        return Worked([
+            rf"The middle weight: $w = \cos\frac{{\theta}}{{2}} = \cos {_num(half)}^\circ = "
+            rf"{_num(w, 4)}$.",
+            r"At $t = \tfrac12$: $C(\tfrac12) = \frac{P_0 + 2w P_1 + P_2}{2 + 2w}$. The "
+            rf"numerator is ${_vec(self.P0)} + {_num(2 * w, 4)}\,{_vec(self.P1)} + "
+            rf"{_vec(self.P2)} = {_vec(numerator, 4)}$, the denominator "
+            rf"$2 + 2w = {_num(2 + 2 * w, 4)}$.",
+            rf"$C(\tfrac12) = {_vec(point)}$. Check: its distance from $M$ is "
+            rf"${_num(distance)}$, the radius.",
+        ], [w, float(point[0]), float(point[1])])
+
     def statement(self):
         c, r = self.center, self.radius
         a, th = self.alpha_deg, self.theta_deg
@@ -268,13 +337,15 @@ class ConicType(_Chapter7):
     def mistakes(self):
         swap = {"ellipse": "hyperbola", "hyperbola": "ellipse", "parabola": "parabola"}
         return [
-            Mistake([curves.conic_type(w1) for _, w1, _ in self.weights], r"You judged each arc by "
+            Mistake([curves.conic_type(w1) for _, w1, _ in self.weights],
+                    r"You judged each arc by "
                     r"its middle weight alone. The rule $w < 1$ / $w = 1$ / $w > 1$ holds for the "
                     r"standard form with end weights 1. Bring each arc to that form first: the "
                     r"curve does not change when all weights are multiplied by $c$, nor when they "
                     r"become $(w_0, c\,w_1, c^2 w_2)$, so the number that decides is "
                     r"$w = \frac{w_1}{\sqrt{w_0 w_2}}$.", "middle weight alone", numeric=False),
-            Mistake([swap[name] for name in self.expected], r"Ellipse and hyperbola are swapped. A "
+            Mistake([swap[name] for name in self.expected],
+                    r"Ellipse and hyperbola are swapped. A "
                     r"small middle weight lets the curve stay away from $P_1$, closing it up: "
                     r"$w < 1$ gives an ellipse; a large one pulls the curve towards $P_1$ and "
                     r"open: $w > 1$ gives a hyperbola (with $w = \frac{w_1}{\sqrt{w_0 w_2}}$).",
@@ -302,6 +373,42 @@ class ConicType(_Chapter7):
         return Feedback("wrong", f"{which} not right yet. For each arc compute "
                         r"$w = \frac{w_1}{\sqrt{w_0 w_2}}$ and compare it with 1.",
                         "types differ")
+
+    @staticmethod
+    def _invariant(row):
+        w0, w1, w2 = (float(x) for x in row)
+        return w0, w1, w2, w1 / math.sqrt(w0 * w2)
+
+    def hints(self):
+        w0, w1, w2, w = self._invariant(self.weights[0])
+        return [
+            r"The rule $w < 1$ ellipse, $w = 1$ parabola, $w > 1$ hyperbola is for the "
+            r"standard form $(1, w, 1)$. Bring each arc to that form first, using the two "
+            r"changes of the weights that keep the curve.",
+            r"Divide all weights by $w_0$, then use $c = \sqrt{w_0 / w_2}$ to make the last one "
+            r"1: the number that decides is $w = \frac{w_1}{\sqrt{w_0 w_2}}$ (compare "
+            r"$w_1^2$ with $w_0 w_2$ to avoid the root).",
+            rf"Arc 1: $w = \frac{{{_num(w1)}}}{{\sqrt{{{_num(w0)} \cdot {_num(w2)}}}}} = "
+            rf"{_num(w, 4)}$. Do the same for arcs 2 and 3.",
+        ]
+
+    def worked(self):
+        steps, names = [], []
+        for k, row in enumerate(self.weights, start=1):
+            w0, w1, w2, w = self._invariant(row)
+            square, product = w1 * w1, w0 * w2       # exact for these weights
+            name = ("ellipse" if square < product else "parabola" if square == product
+                    else "hyperbola")
+            sign = "<" if square < product else "=" if square == product else ">"
+            names.append(name)
+            steps.append(rf"Arc {k}: $w = \frac{{{_num(w1)}}}{{\sqrt{{{_num(w0)} \cdot "
+                         rf"{_num(w2)}}}}} = {_num(w, 4)}$ (${_num(square)} {sign} "
+                         rf"{_num(product)}$): $w {sign} 1$, an arc of "
+                         rf"{'an' if name == 'ellipse' else 'a'} **{name}**.")
+        steps.append(r"The middle weight alone would not do: only "
+                     r"$\frac{w_1}{\sqrt{w_0 w_2}}$ stays the same under the changes of weights "
+                     r"that keep the curve.")
+        return Worked(steps, names)
 
     def statement(self):
         rows = "\n".join(rf"| {k + 1} | {_num(w0)} | {_num(w1)} | {_num(w2)} |"
