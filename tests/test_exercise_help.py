@@ -28,7 +28,7 @@ def _ids(cls):
 def _shares_memory(a, b):
     try:
         return np.shares_memory(np.asarray(a), np.asarray(b))
-    except TypeError:
+    except (TypeError, ValueError):                 # ragged: nothing shared as one array
         return False
 
 

@@ -10,7 +10,8 @@ import zlib
 import numpy as np
 
 from ... import format as fmt
-from .feedback import (UNEXPLAINED, Feedback, _is_whole, _multiple, _off, diagnose_matrix,
+from .feedback import (UNEXPLAINED, Feedback, _has_bool, _is_whole, _multiple, _off, as_vector,
+                       diagnose_matrix,
                        diagnose_number, diagnose_parts, diagnose_vector, hinted, read_floats,
                        tolerance)
 from .guidance import Guidance, _record, recorded_check
@@ -295,7 +296,12 @@ def _as_point(answer, dim, projective):
     Returns the answer to compare (unchanged when it has `dim` entries or cannot be read), or a
     Feedback when it is homogeneous with :math:`w \\ne 1`.
     """
+    if _has_bool(answer):
+        return Feedback("invalid", "Your answer holds True or False; give the point as numbers.",
+                        "not a number")
     arr = read_floats(answer)
+    if arr is not None:
+        arr = as_vector(arr, dim + 1)
     if arr is None or arr.shape != (dim + 1,):
         return answer
     w = float(arr[-1])

@@ -141,7 +141,7 @@ def rounding_of(value, expected, mistakes=()):
     if scale == 0 or float(np.abs(a - b).max()) > CLOSE_SHARE * scale:
         return False
     for x, y in zip(a.ravel(), b.ravel()):
-        if x != y and not any(math.isclose(x, r, rel_tol=1e-9, abs_tol=1e-12)
+        if abs(x - y) > 1e-12 and not any(math.isclose(x, r, rel_tol=1e-9, abs_tol=1e-12)
                               for r in _roundings(float(y))):
             return False
     for mistake in mistakes:
@@ -469,8 +469,9 @@ def _entrywise(value, expected, atol, what, transform=True):
     cells = [tuple(int(i) for i in idx) for idx in np.argwhere(off)]
     listed = ", ".join(str(c) for c in cells[:6]) + (" ..." if len(cells) > 6 else "")
     if off.sum() == sign_only.sum():
-        hint = (": check the direction of each rotation (where does the $-\\sin\\theta$ go?) "
-                "and the sign of each displacement." if transform else ".")
+        hint = (": check the direction of each rotation (where does the $-\\sin\\theta$ go?), "
+                "the side each axis points to and the sign of each displacement or offset."
+                if transform else ".")
         return Feedback("wrong", f"Right magnitudes but the wrong sign in entries {listed} (row, "
                         "column, counted from 0)" + hint, "sign")
     worst = max(cells, key=lambda c: abs(value[c] - expected[c]))
