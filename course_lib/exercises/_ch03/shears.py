@@ -64,7 +64,7 @@ class ShearInverse(DrawnExercise):
 
     def draw(self, rng):
         self.kind = str(pick(rng, tuple(_SHEARS)))
-        self.a, self.b = (float(v) for v in rng.choice([-3, -2, 2, 3], size=2))
+        self.a, self.b = (float(v) for v in rng.choice([-4, -3, -2, -0.5, 0.5, 2, 3, 4], size=2))
         self.expected = tf.inverse(_shear(self.kind, self.a, self.b))
 
     def mistakes(self):
@@ -198,7 +198,7 @@ class ShearImage(PointAnswer, DrawnExercise):
             + data_note("kind", "a", "b", "p"))
 
 
-_BOX_SCALES = (1.0, 2.0, 3.0, 0.5, -1.0, -2.0)
+_BOX_SCALES = (1.0, 2.0, 3.0, 0.5, 1.5, -1.0, -2.0, -0.5)
 
 
 class ShearedBoxVolume(DrawnExercise):
@@ -225,7 +225,7 @@ class ShearedBoxVolume(DrawnExercise):
     may_coincide = ("negative volume",)
 
     def draw(self, rng):
-        self.w, self.h, self.l = (float(v) for v in rng.integers(1, 5, size=3))
+        self.w, self.h, self.l = (float(v) for v in rng.integers(1, 6, size=3))
         self.kind = str(pick(rng, tuple(_SHEARS)))
         self.a, self.b = (float(v) for v in rng.choice([-2, -1, 1, 2], size=2))
         self.sx, self.sy, self.sz = (float(v) for v in rng.choice(_BOX_SCALES, size=3))

@@ -668,11 +668,7 @@ class AxisAngleOfMatrix(DrawnExercise):
         turned = angle - 2 * math.pi * round(angle / (2 * math.pi)) \
             if abs(angle) <= 3 * math.pi + 0.01 else angle           # degrees are not turns
         direction = agrees(unit, n)
-        if direction and agrees(turned, theta):
-            if not agrees(length, 1.0):
-                return Feedback("wrong", f"Right direction and angle, but your axis has length "
-                                f"{fmt.number(length)}: give a unit vector (divide the axis by "
-                                "its length).", "not normalized")
+        if direction and agrees(turned, theta) and agrees(length, 1.0):
             return Feedback("correct", "The axis and the angle are right (they describe the "
                             "rotation of $R$).")
         if rounding_of(np.append(axis, turned), np.append(n, theta)):
@@ -680,6 +676,10 @@ class AxisAngleOfMatrix(DrawnExercise):
                             "rounded to too few digits. Give at least 3 significant digits (or 3 "
                             "decimals), and keep the full precision in the intermediate steps.",
                             "rounded")
+        if direction and agrees(turned, theta):
+            return Feedback("wrong", f"Right direction and angle, but your axis has length "
+                            f"{fmt.number(length)}: give a unit vector (divide the axis by its "
+                            "length).", "not normalized")
         if direction and agrees(math.radians(angle), theta):
             return Feedback("wrong", f"Your angle is in degrees; give it in radians "
                             f"({fmt.number(angle)}° = {fmt.number(math.radians(angle))} rad).",
@@ -806,7 +806,6 @@ class ComposeRotationsWithQuaternions(DrawnExercise):
     title = "Two rotations as one quaternion"
     answer_form = "quaternion"
     what = "the quaternion"
-    may_coincide = ("conjugate",)          # turns by 180 degrees are their own inverses
 
     def draw(self, rng):
         name1, name2 = rng.choice(list(_COORDINATE_AXES), size=2, replace=False)
@@ -826,7 +825,7 @@ class ComposeRotationsWithQuaternions(DrawnExercise):
     def mistakes(self):
         q1, q2 = self._quaternions()
         full1, full2 = self._quaternions(2.0)
-        return [
+        found = [
             Mistake(quat.multiply(q1, q2), r"You computed $q_1\,q_2$, which rotates by $q_2$ "
                     r"first. Applying $q_1$ and then $q_2$ gives "
                     r"$q_2 (q_1 p \bar q_1) \bar q_2 = (q_2 q_1)\, p\, \overline{q_2 q_1}$: the "
@@ -836,12 +835,6 @@ class ComposeRotationsWithQuaternions(DrawnExercise):
             Mistake(quat.multiply(full2, full1), r"The order is right, but you built $q_1$ and "
                     r"$q_2$ with the full angles: each quaternion holds half its angle, "
                     r"$(\cos\frac{\theta}{2}, \sin\frac{\theta}{2}\,\hat n)$.", "full angle"),
-            Mistake(quat.multiply(quat.conjugate(q2), quat.conjugate(q1)), r"The order is "
-                    r"right, but both factors are conjugates, $\bar q_2\,\bar q_1$: each turns "
-                    r"by $-\theta_i$. For a counter-clockwise turn by $+\theta$ about an axis "
-                    r"the vector part is $+\sin\frac{\theta}{2}$ times the axis, e.g. "
-                    r"$(\cos\frac{\theta}{2}, \sin\frac{\theta}{2}, 0, 0)$ about x.",
-                    "conjugate"),
             Mistake(quat.multiply(quat.from_axis_angle(self.axis2, self.theta2_deg),
                                   quat.from_axis_angle(self.axis1, self.theta1_deg)),
                     rf"You fed the half angles in degrees "
@@ -850,6 +843,15 @@ class ComposeRotationsWithQuaternions(DrawnExercise):
                     r"angle's number of *radians*. Convert first with `np.radians` (or use "
                     r"`.theta1` and `.theta2`, which are in radians).", "degrees"),
         ]
+        if 180 not in (self.theta1_deg, self.theta2_deg):
+            # with a half turn the two conjugates give the rotation of q1 q2 ("wrong order")
+            found.append(Mistake(
+                quat.multiply(quat.conjugate(q2), quat.conjugate(q1)), r"The order is right, "
+                r"but both factors are conjugates, $\bar q_2\,\bar q_1$: each turns by "
+                r"$-\theta_i$. For a counter-clockwise turn by $+\theta$ about an axis the vector "
+                r"part is $+\sin\frac{\theta}{2}$ times the axis, e.g. "
+                r"$(\cos\frac{\theta}{2}, \sin\frac{\theta}{2}, 0, 0)$ about x.", "conjugate"))
+        return found
 
     def _factors(self):
         c1, s1 = _cos_sin(self.theta1_deg / 2)
