@@ -393,7 +393,8 @@ def test_axis_angle_accepts_every_description_of_the_rotation():
     for ex in exercises("AxisAngleOfMatrix"):
         (axis, angle), _ = axis_angle_of_matrix(ex)
         for answer in [(-axis, -angle), (axis, angle + 2 * math.pi), (-axis, 2 * math.pi - angle),
-                       (list(axis), float(angle)), [axis, angle]]:
+                       (list(axis), float(angle)), [axis, angle], (axis.reshape(3, 1), angle),
+                       (axis.reshape(1, 3).tolist(), np.array([[angle]]))]:
             assert ex.check(answer).status == "correct", (ex, answer)
 
 

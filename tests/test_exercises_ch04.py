@@ -421,6 +421,15 @@ def test_a_point_reads_the_same_in_every_form(name):
             assert ex.check(answer).status == "correct", (ex, answer)
 
 
+@pytest.mark.parametrize("name", POINTS + ["CrossRatioUnderProjection"])
+def test_a_column_or_a_row_is_read_as_the_vector_it_is(name):
+    for ex in exercises(name, range(40)):
+        right, _ = SPECS[name][0](ex)
+        right = np.asarray(right, dtype=float)
+        for answer in (right.reshape(-1, 1), right.reshape(1, -1), right.reshape(-1, 1).tolist()):
+            assert ex.check(answer).status == "correct", (ex, answer)
+
+
 @pytest.mark.parametrize("name", SPECS)
 def test_true_and_false_are_no_numbers(name):
     for ex in exercises(name, range(10)):

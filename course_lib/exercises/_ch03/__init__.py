@@ -235,3 +235,11 @@ def _degrees_text(angle_deg, name=r"\theta"):
 def _rotation_words(angle_deg, name=r"\theta"):
     c, s = _cos_sin(angle_deg)
     return rf"$\cos {name} = {_num(c)}$, $\sin {name} = {_num(s)}$"
+
+
+def _scalar_last(q):
+    return np.roll(np.asarray(q, dtype=float), -1)
+
+
+_SCALAR_LAST_TEXT = (r"You wrote the scalar part last, $(x, y, z, s)$ (scipy's order). The "
+                     r"textbook and this course write it first: $q = (s, x, y, z)$.")

@@ -5,7 +5,7 @@ The exercises are in one module per topic of this package; import them from
 """
 
 from ... import format as fmt
-from .._ch03 import PointAnswer, _par, _snap      # points read the same in both chapters
+from .._ch03 import PointAnswer, _par, _snap  # noqa: F401  (points read alike in ch03, ch04)
 from ..core import DECIMALS
 
 

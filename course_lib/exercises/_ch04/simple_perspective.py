@@ -8,7 +8,7 @@ import numpy as np
 from ... import transforms as tf
 from ... import viewing
 from ..core import DrawnExercise, Mistake, Worked, data_note, pick, small_ints
-from . import _POINT_3, PointAnswer, _num, _par, _vec
+from . import _POINT_3, PointAnswer, _num, _vec
 
 __all__ = [
     "SimplePerspectivePoint",

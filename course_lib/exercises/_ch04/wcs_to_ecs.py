@@ -102,7 +102,7 @@ class _Axes:
         return [
             r"Build the axes in this order: $z_e = -g / \lVert g \rVert$ (backwards, towards the "
             r"viewer), $x_e = up \times z_e$ normalized (to the right), and "
-            r"$y_e = z_e \times x_e$ (the part of $up$ across the gaze).",
+            r"$y_e = z_e \times x_e$ (the direction of the part of $up$ across the gaze).",
             rf"Here $\lVert g \rVert = {_num(self.gaze_length)}$, so $z_e = {_vec(self.z)}$; and "
             rf"$up \times z_e = {_vec(self.up_cross_z)}$, of length "
             rf"${_num(self.cross_length)}$.",
