@@ -471,8 +471,9 @@ def _variant_key(value):
 
 
 #: A fresh seed is a fresh exercise: among 300 seeds every exercise has at least this many
-#: different right answers (computed by the independent solvers).
-MIN_VARIANTS = 30
+#: different right answers (computed by the independent solvers). The fewest is 88, for
+#: PerspectiveMatrix, which has at most 3 x 3 x 2 x 5 = 90 (field of view, aspect, near, far).
+MIN_VARIANTS = 80
 
 
 @pytest.mark.parametrize("name", SPECS)
