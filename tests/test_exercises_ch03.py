@@ -113,6 +113,7 @@ def compose2d(ex):
         "angle sign": T @ rot2(-ex.theta) @ S,
         "translation in bottom row": bottom,
         "transposed": right.T,
+        "degrees": T @ rot2(ex.theta_deg) @ S,        # cos and sin of the degrees as radians
     }
 
 
@@ -126,6 +127,7 @@ def rotate_about_point(ex):
         "angle sign": affine2(R_back, c - R_back @ c),
         "missing T(c)": R @ trans2(-c),
         "missing T(-c)": trans2(c) @ R,
+        "degrees": trans2(c) @ rot2(ex.theta_deg) @ trans2(-c),
     }
 
 
@@ -139,6 +141,7 @@ def inverse_of_composite(ex):
         "translation not transformed": affine2(linear_inv, -np.asarray(ex.d)),
         "scale not inverted": scale2(ex.sx, ex.sy) @ rot2(-ex.theta) @ trans2(-ex.d),
         "rotation not inverted": scale2(1 / ex.sx, 1 / ex.sy) @ rot2(ex.theta) @ trans2(-ex.d),
+        "degrees": scale2(1 / ex.sx, 1 / ex.sy) @ rot2(-ex.theta_deg) @ trans2(-ex.d),
     }
 
 
@@ -152,6 +155,7 @@ def mirror_about_line(ex):
         "rotations swapped": reflection_about_line(c, -ex.phi),
         "translations swapped": affine2(L, -c + L @ c),
         "no rotation": affine2(flip, c - flip @ c),
+        "degrees": reflection_about_line(c, ex.phi_deg),
     }
 
 
@@ -196,6 +200,7 @@ def rotation_about_axis(ex):
         "angle sign": a + rotation(ex.u, -ex.theta).apply(p - a),
         "missing T(a)": r.apply(p - a),
         "missing T(-a)": r.apply(p) + a,
+        "degrees": a + rotation(ex.u, ex.theta_deg).apply(p - a),
     }
 
 
@@ -209,6 +214,7 @@ def quaternion_from_axis_angle(ex):
         "scalar last": scalar_last(right),
         "degrees": np.r_[math.cos(hd), math.sin(hd) * n],
         "sin and cos swapped": np.r_[math.sin(h), math.cos(h) * n],
+        "conjugate": quat_of(rotation(ex.axis, -ex.theta)),        # the rotation by -theta
     }
 
 
@@ -236,6 +242,7 @@ def rotate_with_quaternion(ex):
         "full angle": rotation(ex.axis, 2 * ex.theta).apply(p),
         "axis not normalized": (raw @ raw) * Rotation.from_quat(raw, scalar_first=True).apply(p),
         "missing conjugate": s * p + np.cross(v, p),
+        "degrees": rotation(ex.axis, ex.theta_deg).apply(p),
     }
 
 
@@ -277,11 +284,20 @@ def compose_rotations(ex):
     r1, r2 = rotation(ex.axis1, ex.theta1), rotation(ex.axis2, ex.theta2)
     right = quat_of(r2 * r1)            # scipy: r2 * r1 applies r1 first
     doubled = rotation(ex.axis2, 2 * ex.theta2) * rotation(ex.axis1, 2 * ex.theta1)
-    return right, {
+    mistakes = {
         "wrong order": quat_of(r1 * r2),
         "scalar last": scalar_last(right),
         "full angle": quat_of(doubled),
+        "degrees": quat_of(rotation(ex.axis2, ex.theta2_deg) * rotation(ex.axis1, ex.theta1_deg)),
     }
+    if 180 not in (ex.theta1_deg, ex.theta2_deg):
+        # both factors conjugated: the inverses of r1 and r2, in the right order (with a half
+        # turn that is the rotation of the wrong order, diagnosed as such)
+        mistakes["conjugate"] = quat_of(r2.inv() * r1.inv())
+        assert gap(mistakes["conjugate"], mistakes["wrong order"], sign_free=True) > 0.05
+    else:
+        assert gap(quat_of(r2.inv() * r1.inv()), mistakes["wrong order"], sign_free=True) < 1e-9
+    return right, mistakes
 
 
 def slerp_midpoint(ex):
@@ -298,6 +314,8 @@ def slerp_midpoint(ex):
 MATRIX_GARBAGE = ["M", {"a": 1}, [[1, 2], [3]], [1, 2, 3], [[1, "a"], [0, 1]],
                   [[math.nan] * 3] * 3, 3 + 2j]
 VECTOR_GARBAGE = ["p", {"x": 1}, [[1, 2], [3]], [1, 2], np.eye(3), [math.inf, 0, 0], [..., 1]]
+POINT_GARBAGE = VECTOR_GARBAGE + [[1, 2, 3, 0], [1, 2, 3, 2], [True, 0, 0], [[1], [2], [True]],
+                                  np.array([1, 0, 1], dtype=bool), [1, 2, 3, True]]
 QUATERNION_GARBAGE = ["q", {"s": 1}, [[1, 2], [3, 4, 5]], [1, 2, 3], np.eye(4),
                       [math.nan] * 4, (1, 2, 3, "z")]
 NUMBER_GARBAGE = ["v", {"v": 1}, [1, 2], [[1], [2, 3]], math.nan]
@@ -312,20 +330,23 @@ SPECS = {
     "InverseOfComposite": (inverse_of_composite, "matrix"),
     "MirrorAboutLine": (mirror_about_line, "matrix"),
     "ShearInverse": (shear_inverse, "matrix"),
-    "ShearImage": (shear_image, "vector"),
+    "ShearImage": (shear_image, "point"),
     "ShearedBoxVolume": (sheared_box_volume, "number"),
-    "RotationAboutArbitraryAxis": (rotation_about_axis, "vector"),
+    "RotationAboutArbitraryAxis": (rotation_about_axis, "point"),
     "QuaternionFromAxisAngle": (quaternion_from_axis_angle, "quaternion"),
     "QuaternionProduct": (quaternion_product, "vector"),
-    "RotatePointWithQuaternion": (rotate_with_quaternion, "vector"),
+    "RotatePointWithQuaternion": (rotate_with_quaternion, "point"),
     "QuaternionToMatrix": (quaternion_to_matrix, "matrix"),
     "MatrixToQuaternion": (matrix_to_quaternion, "quaternion"),
     "AxisAngleOfMatrix": (axis_angle_of_matrix, "axis-angle"),
     "ComposeRotationsWithQuaternions": (compose_rotations, "quaternion"),
     "SlerpMidpoint": (slerp_midpoint, "quaternion"),
 }
-GARBAGE = {"matrix": MATRIX_GARBAGE, "vector": VECTOR_GARBAGE, "number": NUMBER_GARBAGE,
-           "quaternion": QUATERNION_GARBAGE, "axis-angle": AXIS_ANGLE_GARBAGE}
+GARBAGE = {"matrix": MATRIX_GARBAGE, "vector": VECTOR_GARBAGE, "point": POINT_GARBAGE,
+           "number": NUMBER_GARBAGE, "quaternion": QUATERNION_GARBAGE,
+           "axis-angle": AXIS_ANGLE_GARBAGE}
+#: The exercises whose answer is a list of numbers (a point, a vector, a quaternion).
+LISTS = [name for name, (_, form) in SPECS.items() if form in ("point", "vector", "quaternion")]
 
 
 exercises = harness.variants(ch03)
@@ -355,7 +376,7 @@ def test_right_answer_is_accepted(name):
             fb = ex.check(answer)
             assert fb.status == "correct", (ex, fb)
             assert bool(fb)
-        if form in ("matrix", "vector", "quaternion"):
+        if form in ("matrix", "vector", "quaternion", "point"):
             assert ex.check(np.asarray(right).tolist()).status == "correct"
 
 
@@ -372,7 +393,8 @@ def test_axis_angle_accepts_every_description_of_the_rotation():
     for ex in exercises("AxisAngleOfMatrix"):
         (axis, angle), _ = axis_angle_of_matrix(ex)
         for answer in [(-axis, -angle), (axis, angle + 2 * math.pi), (-axis, 2 * math.pi - angle),
-                       (list(axis), float(angle)), [axis, angle]]:
+                       (list(axis), float(angle)), [axis, angle], (axis.reshape(3, 1), angle),
+                       (axis.reshape(1, 3).tolist(), np.array([[angle]]))]:
             assert ex.check(answer).status == "correct", (ex, answer)
 
 
@@ -436,3 +458,76 @@ def test_numbers_are_nice_for_hand_work():
     for ex in exercises("MatrixToQuaternion"):
         denominators = [k * k for k in range(1, 11)]
         assert any(np.allclose(ex.R * n2, np.round(ex.R * n2)) for n2 in denominators)
+
+
+# ---------------------------------------------------------------------------------------------
+# Shapes, True and False, rounding, variety
+# ---------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", [n for n in LISTS if SPECS[n][1] == "point"])
+def test_a_point_reads_the_same_in_every_form(name):
+    for ex in exercises(name, range(40)):
+        right, _ = SPECS[name][0](ex)
+        right = np.asarray(right, dtype=float)
+        homogeneous = np.append(right, 1.0)
+        for answer in (right, list(right), right.reshape(3, 1), right.reshape(1, 3),
+                       [[v] for v in right], homogeneous, homogeneous.reshape(4, 1),
+                       [list(homogeneous)], tuple(right)):
+            assert ex.check(answer).status == "correct", (ex, answer)
+
+
+@pytest.mark.parametrize("name", LISTS)
+def test_a_column_is_read_as_the_vector_it_is(name):
+    for ex in exercises(name, range(40)):
+        right, _ = SPECS[name][0](ex)
+        column = np.asarray(right, dtype=float).reshape(-1, 1)
+        assert ex.check(column).status == "correct", ex
+        assert ex.check(column.tolist()).status == "correct", ex
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_true_and_false_are_no_numbers(name):
+    solve, form = SPECS[name]
+    for ex in exercises(name, range(10)):
+        right, _ = solve(ex)
+        if form == "axis-angle":
+            axis, angle = right
+            odd = [(axis, True), ([True, False, False], angle), (np.ones(3, dtype=bool), angle)]
+        else:
+            flat = np.asarray(right, dtype=float)
+            odd = [True, False, np.ones(flat.shape, dtype=bool),
+                   np.where(flat > 0, True, False).tolist()]
+        for answer in odd:
+            fb = ex.check(answer)
+            assert fb.status == "invalid" and fb.diagnosis == "not a number", (ex, answer, fb)
+
+
+@pytest.mark.parametrize("name", LISTS + ["AxisAngleOfMatrix"])
+def test_an_answer_rounded_to_2_decimals_is_right_or_called_rounded(name):
+    """Never "wrong length", "not normalized" or "components differ" for a mere rounding."""
+    solve, _ = SPECS[name]
+    for ex in exercises(name):
+        right, _ = solve(ex)
+        fb = ex.check(rounded(right, 2))
+        assert fb.status == "correct" or fb.diagnosis == "rounded", (ex, rounded(right, 2), fb)
+
+
+def _variant_key(value):
+    if isinstance(value, tuple):
+        return tuple(_variant_key(part) for part in value)
+    value = np.round(np.asarray(value, dtype=float), 6) + 0.0
+    return value.shape, tuple(value.ravel())
+
+
+#: A fresh seed is a fresh exercise: among 300 seeds every exercise has at least this many
+#: different right answers (computed by the independent solvers). The fewest is 82, for
+#: ComposeRotationsWithQuaternions, which has at most 6 x 5 x 5 = 150 (two coordinate axes, two
+#: angles of five).
+MIN_VARIANTS = 80
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_a_fresh_seed_is_a_fresh_exercise(name):
+    cls, (solve, _) = getattr(ch03, name), SPECS[name]
+    answers = {_variant_key(solve(cls(seed=seed))[0]) for seed in range(300)}
+    assert len(answers) >= MIN_VARIANTS, (name, len(answers))

@@ -13,7 +13,7 @@ import pytest
 
 from course_lib.exercises import ch04
 import exercise_harness as harness
-from exercise_harness import MIN_DIAGNOSED
+from exercise_harness import MIN_DIAGNOSED, Either
 
 try:
     from pyglm import glm            # PyGLM >= 2.8 (plain `import glm` is being deprecated)
@@ -84,6 +84,8 @@ def simple_perspective_point(ex):
         "no divide": [x * d, y * d, z * d],
         "ratio upside down": [x * z / d, y * z / d, d],
         "kept z": [x * d / z, y * d / z, z],
+        # w = -z (the OpenGL camera's last row): the plane z = -d, or only x and y flipped
+        "divided by -z": Either([[-x * d / z, -y * d / z, -d], [-x * d / z, -y * d / z, d]]),
     }
 
 
@@ -151,6 +153,7 @@ def perspective_matrix(ex):
         mistakes["full angle"] = perspective_by_hand(t_full, a * t_full, n, f)
     if a != 1:
         mistakes["aspect inverted"] = perspective_by_hand(t, t / a, n, f)
+    mistakes["near and far swapped"] = rows(glm.perspective(math.radians(ex.fov_deg), a, f, n))
     return right, mistakes
 
 
@@ -185,14 +188,17 @@ def orthographic_matrix(ex):
     unscaled = right.copy()
     unscaled[:3, 3] = [-(l + r) / 2, -(b + t) / 2, (n + f) / 2]
     return right, {"near/far signs": positive, "translation sign": flipped,
-                   "translation not scaled": unscaled}
+                   "translation not scaled": unscaled,
+                   "near and far swapped": rows(glm.ortho(l, r, b, t, f, n))}
 
 
 def oblique(ex):
     p, dop = np.asarray(ex.p, dtype=float), np.asarray(ex.dop, dtype=float)
     image = p - p[2] / dop[2] * dop
     mistakes = {
-        "sign": p + p[2] / dop[2] * dop * [1, 1, 0] - [0, 0, p[2]],
+        # moved by +z/DOP_z DOP: with z' = 0 written down, or the 2z it gives
+        "shift reversed": Either([p + p[2] / dop[2] * dop * [1, 1, 0] - [0, 0, p[2]],
+                                  p + p[2] / dop[2] * dop]),
         "orthographic": [p[0], p[1], 0.0],
         "kept z": [image[0], image[1], p[2]],
     }
@@ -293,7 +299,9 @@ def vanishing_point(ex):
 
 MATRIX_GARBAGE = ["M", {"a": 1}, [[1, 2], [3]], [1, 2, 3], [[1, "a"], [0, 1]],
                   [[math.nan] * 4] * 4, np.eye(5)]
-POINT_GARBAGE = ["p", {"x": 1}, [[1, 2], [3]], [1, 2], np.eye(3), [math.inf, 0, 0], [1, 2, 3, 0]]
+POINT_GARBAGE = ["p", {"x": 1}, [[1, 2], [3]], [1, 2], np.eye(3), [math.inf, 0, 0], [1, 2, 3, 0],
+                 [True, 0, 0], [[1], [2], [True]], np.array([1, 0, 1], dtype=bool),
+                 [1, 2, 3, True]]
 NUMBER_GARBAGE = ["v", {"v": 1}, [1, 2], [[1], [2, 3]], math.nan]
 FOUR_GARBAGE = ["r", {"r": 1}, [1, 2, 3], [[1, 2], [3, 4]], [1, 2, 3, math.nan], ("a", 1, 2, 3)]
 
@@ -351,19 +359,20 @@ def test_mistakes_are_diagnosed(name):
     diagnosed = {}
     for ex in exercises(name):
         right, mistakes = solve(ex)
-        for key, value in mistakes.items():
-            fb = ex.check(value)
-            distance = projective_gap(value, right) if form == "projective" \
-                else gap(value, right)
-            if distance < SAME:      # in this variant the slip happens to give the right answer
-                assert fb.status == "correct", (ex, key, fb)
-                continue
-            assert fb.status == "wrong", (ex, key, fb)
-            assert fb.diagnosis == key, (ex, key, fb.diagnosis, fb.message)
-            assert len(fb.message) > 40
-            diagnosed[key] = diagnosed.get(key, 0) + 1
-            if form == "projective":                 # the same slip in the signed form
-                assert ex.check(-np.asarray(value)).diagnosis == key
+        for key, values in mistakes.items():
+            for value in (values if isinstance(values, Either) else [values]):
+                fb = ex.check(value)
+                distance = projective_gap(value, right) if form == "projective" \
+                    else gap(value, right)
+                if distance < SAME:  # in this variant the slip happens to give the right answer
+                    assert fb.status == "correct", (ex, key, fb)
+                    continue
+                assert fb.status == "wrong", (ex, key, fb)
+                assert fb.diagnosis == key, (ex, key, fb.diagnosis, fb.message)
+                assert len(fb.message) > 40
+                diagnosed[key] = diagnosed.get(key, 0) + 1
+                if form == "projective":                 # the same slip in the signed form
+                    assert ex.check(-np.asarray(value)).diagnosis == key
     keys = set().union(*(solve(ex)[1] for ex in exercises(name, range(30))))
     for key in keys:
         assert diagnosed.get(key, 0) >= MIN_DIAGNOSED, (key, diagnosed)
@@ -391,3 +400,84 @@ def test_numbers_are_nice_for_hand_work():
         right, _ = perspective_divide(ex)
         assert np.all(np.abs(right) <= 1 + 1e-9)                     # inside the view volume
         assert np.allclose(ex.M * 4, np.round(ex.M * 4))
+
+
+# ---------------------------------------------------------------------------------------------
+# Shapes, True and False, rounding, variety
+# ---------------------------------------------------------------------------------------------
+
+POINTS = [name for name, (_, form) in SPECS.items() if form == "point"]
+
+
+@pytest.mark.parametrize("name", POINTS)
+def test_a_point_reads_the_same_in_every_form(name):
+    for ex in exercises(name, range(40)):
+        right, _ = SPECS[name][0](ex)
+        right = np.asarray(right, dtype=float)
+        homogeneous = np.append(right, 1.0)
+        for answer in (right, list(right), right.reshape(3, 1), right.reshape(1, 3),
+                       [[v] for v in right], homogeneous, homogeneous.reshape(4, 1),
+                       [list(homogeneous)], tuple(right)):
+            assert ex.check(answer).status == "correct", (ex, answer)
+
+
+@pytest.mark.parametrize("name", POINTS + ["CrossRatioUnderProjection"])
+def test_a_column_or_a_row_is_read_as_the_vector_it_is(name):
+    for ex in exercises(name, range(40)):
+        right, _ = SPECS[name][0](ex)
+        right = np.asarray(right, dtype=float)
+        for answer in (right.reshape(-1, 1), right.reshape(1, -1), right.reshape(-1, 1).tolist()):
+            assert ex.check(answer).status == "correct", (ex, answer)
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_true_and_false_are_no_numbers(name):
+    for ex in exercises(name, range(10)):
+        right, _ = SPECS[name][0](ex)
+        flat = np.asarray(right, dtype=float)
+        for answer in (True, False, np.ones(flat.shape, dtype=bool),
+                       np.where(flat > 0, True, False).tolist()):
+            fb = ex.check(answer)
+            assert fb.status == "invalid" and fb.diagnosis == "not a number", (ex, answer, fb)
+
+
+@pytest.mark.parametrize("name", POINTS)
+def test_an_answer_rounded_to_2_decimals_is_right_or_called_rounded(name):
+    """Never "wrong length", "not normalized" or "components differ" for a mere rounding."""
+    for ex in exercises(name):
+        right, _ = SPECS[name][0](ex)
+        fb = ex.check(np.round(right, 2))
+        assert fb.status == "correct" or fb.diagnosis == "rounded", (ex, np.round(right, 2), fb)
+
+
+def test_pixels_given_as_whole_numbers_are_called_rounded():
+    """Floored or rounded pixel coordinates are close, not of the "wrong length"."""
+    told = 0
+    for ex in exercises("ViewportPixel"):
+        right, _ = viewport_pixel(ex)
+        for whole in (np.floor, np.round, np.ceil):
+            answer = np.array([whole(right[0]), whole(right[1]), right[2]])
+            fb = ex.check(answer)
+            assert fb.status == "correct" or fb.diagnosis == "rounded", (ex, answer, fb)
+            told += fb.diagnosis == "rounded"
+        fb = ex.check(np.round(right, 1))
+        assert fb.status == "correct" or fb.diagnosis == "rounded", (ex, fb)
+    assert told >= 20                       # some pixels are not whole (e.g. 37.5)
+
+
+def _variant_key(value):
+    value = np.round(np.asarray(value, dtype=float), 6) + 0.0
+    return value.shape, tuple(value.ravel())
+
+
+#: A fresh seed is a fresh exercise: among 300 seeds every exercise has at least this many
+#: different right answers (computed by the independent solvers). The fewest is 88, for
+#: PerspectiveMatrix, which has at most 3 x 3 x 2 x 5 = 90 (field of view, aspect, near, far).
+MIN_VARIANTS = 80
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_a_fresh_seed_is_a_fresh_exercise(name):
+    cls, (solve, _) = getattr(ch04, name), SPECS[name]
+    answers = {_variant_key(solve(cls(seed=seed))[0]) for seed in range(300)}
+    assert len(answers) >= MIN_VARIANTS, (name, len(answers))

@@ -23,9 +23,9 @@ from ._ch03.composition import (ComposeMatrix2D, InverseOfComposite, MirrorAbout
                                 RotateAboutPoint)
 from ._ch03.shears import ShearImage, ShearInverse, ShearedBoxVolume
 from ._ch03.axis_rotation import RotationAboutArbitraryAxis
-from ._ch03.unit_quaternions import (AxisAngleOfMatrix, ComposeRotationsWithQuaternions,
-                                     MatrixToQuaternion, QuaternionFromAxisAngle, QuaternionProduct,
-                                     QuaternionToMatrix, RotatePointWithQuaternion, SlerpMidpoint)
+from ._ch03.unit_quaternions import (ComposeRotationsWithQuaternions, QuaternionFromAxisAngle,
+                                     QuaternionProduct, RotatePointWithQuaternion, SlerpMidpoint)
+from ._ch03.rotation_matrices import AxisAngleOfMatrix, MatrixToQuaternion, QuaternionToMatrix
 
 __all__ = [
     "EXERCISES",

@@ -9,8 +9,9 @@ import numpy as np
 
 from ... import format as fmt
 from ... import transforms as tf
-from ..core import DrawnExercise, Mistake, data_note, pick, small_ints
-from . import _ANGLES_2D, _MATRIX_3, _deg, _vec
+from ..core import DrawnExercise, Mistake, Worked, data_note, pick, small_ints
+from . import (_ANGLES_2D, _MATRIX_3, _affine2, _cos_sin, _deg, _degrees_text, _mat, _num,
+               _par, _rot2, _rotation_words, _vec)
 
 __all__ = [
     "ComposeMatrix2D",
@@ -21,6 +22,11 @@ __all__ = [
 
 
 _SCALES_2D = (2.0, 3.0, 0.5, -1.0, -2.0)
+
+
+def _scaled_rotation(c, s, sx, sy):
+    """The 2x2 block of R(theta) S(sx, sy): the columns of the rotation scaled."""
+    return np.array([[c * sx, -s * sy], [s * sx, c * sy]])
 
 
 class ComposeMatrix2D(DrawnExercise):
@@ -84,7 +90,38 @@ class ComposeMatrix2D(DrawnExercise):
                     r"row and the rotation turns the other way. With column vectors the images "
                     r"of the axes are the columns and the translation is the last column.",
                     "transposed"),
+            Mistake(T @ tf.rotate(self.theta_deg) @ S, _degrees_text(self.theta_deg), "degrees"),
         ]
+
+    def hints(self):
+        c, s = _cos_sin(self.theta_deg)
+        block = _scaled_rotation(c, s, self.sx, self.sy)
+        return [
+            r"With column vectors ($p' = M\,p$) the matrix next to $p$ acts first, so the step "
+            r"done first stands **rightmost**: $M = T(d)\,R(\theta)\,S(s_x, s_y)$.",
+            rf"Here {_rotation_words(self.theta_deg)}. Multiplying $R(\theta)$ on the right by "
+            r"the diagonal $S$ multiplies its first column by $s_x$ and its second by $s_y$.",
+            rf"The upper-left $2 \times 2$ block of $M$ is $R\,S = {_mat(block)}$. The "
+            r"translation comes last, so nothing acts on it: the last column is "
+            rf"$({_num(self.d[0])}, {_num(self.d[1])}, 1)$.",
+        ]
+
+    def worked(self):
+        c, s = _cos_sin(self.theta_deg)
+        S = np.diag([self.sx, self.sy, 1.0])
+        R = _rot2(c, s)
+        RS = R * np.array([self.sx, self.sy, 1.0])          # the columns of R, scaled
+        M = RS.copy()
+        M[:2, 2] = self.d                                    # T(d) (R S): d in the last column
+        return Worked([
+            r"The first step stands rightmost: $M = T(d)\,R(\theta)\,S(s_x, s_y)$.",
+            rf"$S = {_mat(S)}$ and, with {_rotation_words(self.theta_deg)}, "
+            rf"$R(\theta) = {_mat(R)}$.",
+            rf"$R\,S$ scales the columns of $R$ by $s_x = {_num(self.sx)}$ and "
+            rf"$s_y = {_num(self.sy)}$: $R\,S = {_mat(RS)}$.",
+            rf"$T(d)$ on the left puts $d = {_vec(self.d)}$ into the last column and leaves the "
+            rf"rest: $M = T(d)\,(R\,S) = {_mat(M)}$.",
+        ], M)
 
     def statement(self):
         return (
@@ -141,7 +178,45 @@ class RotateAboutPoint(DrawnExercise):
                     "missing T(c)"),
             Mistake(T_c @ R, r"You rotated about the origin and then translated by $c$: the "
                     r"first step $T(-c)$ (rightmost factor) is missing.", "missing T(-c)"),
+            Mistake(tf.rotate_about(self.theta_deg, self.c), _degrees_text(self.theta_deg),
+                    "degrees"),
         ]
+
+    def _fixed_column(self):
+        """R c and the last column c - R c, by hand."""
+        c, s = _cos_sin(self.theta_deg)
+        cx, cy = self.c
+        rc = np.array([c * cx - s * cy, s * cx + c * cy])
+        return rc, np.asarray(self.c, dtype=float) - rc
+
+    def hints(self):
+        rc, column = self._fixed_column()
+        return [
+            r"Only a rotation about the origin has a simple matrix. Move $c$ to the origin, "
+            r"rotate, and move it back: $M = T(c)\,R(\theta)\,T(-c)$ (the first step is the "
+            r"rightmost factor).",
+            rf"The upper-left $2 \times 2$ block of $M$ is that of $R(\theta)$, with "
+            rf"{_rotation_words(self.theta_deg)}; only the last column needs work: it is "
+            r"$c - R\,c$, which keeps $c$ where it is.",
+            rf"Here $R\,c = {_vec(rc)}$, so the last column is $c - R\,c = {_vec(column)}$.",
+        ]
+
+    def worked(self):
+        c, s = _cos_sin(self.theta_deg)
+        rc, column = self._fixed_column()
+        M = _affine2([[c, -s], [s, c]], column)
+        return Worked([
+            r"$M = T(c)\,R(\theta)\,T(-c)$: for any point, $M\,p = c + R\,(p - c) = "
+            r"R\,p + (c - R\,c)$. So the upper-left block is that of $R$, and the last column "
+            r"is $c - R\,c$.",
+            rf"{_rotation_words(self.theta_deg)}, so the block is "
+            rf"$\begin{{bmatrix}} {_num(c)} & {_num(-s)} \\ {_num(s)} & {_num(c)} "
+            r"\end{bmatrix}$.",
+            rf"$R\,c = ({_par(c)} \cdot {_par(self.c[0])} - {_par(s)} \cdot "
+            rf"{_par(self.c[1])},\ {_par(s)} \cdot {_par(self.c[0])} + {_par(c)} \cdot "
+            rf"{_par(self.c[1])}) = {_vec(rc)}$, and $c - R\,c = {_vec(column)}$.",
+            rf"$M = {_mat(M)}$. Check: $M$ sends $c = {_vec(self.c)}$ to itself.",
+        ], M)
 
     def statement(self):
         return (
@@ -214,7 +289,45 @@ class InverseOfComposite(DrawnExercise):
             Mistake(S_inv @ tf.rotate(self.theta) @ T_inv, r"The rotation is not inverted: the "
                     r"inverse of $R(\theta)$ is $R(-\theta) = R(\theta)^T$.",
                     "rotation not inverted"),
+            Mistake(S_inv @ tf.rotate(-self.theta_deg) @ T_inv, _degrees_text(self.theta_deg),
+                    "degrees"),
         ]
+
+    def _inverse_block(self):
+        """S(1/sx, 1/sy) R(-theta): the rows of R(-theta) divided by sx and sy."""
+        c, s = _cos_sin(self.theta_deg)
+        return np.array([[c / self.sx, s / self.sx], [-s / self.sy, c / self.sy]])
+
+    def hints(self):
+        block = self._inverse_block()
+        return [
+            r"To undo three steps, undo the last one first: "
+            r"$(T\,R\,S)^{-1} = S^{-1}\,R^{-1}\,T^{-1}$. Invert each factor and reverse the "
+            r"order.",
+            rf"$S^{{-1}} = S({_num(1 / self.sx)}, {_num(1 / self.sy)})$, "
+            rf"$R^{{-1}} = R(-\theta) = R(\theta)^T$ with {_rotation_words(self.theta_deg)}, "
+            rf"and $T^{{-1}} = T({_vec(-np.asarray(self.d))})$.",
+            rf"The upper-left block of $M^{{-1}}$ is $S^{{-1}} R(-\theta) = {_mat(block)}$; the "
+            r"last column is that block times $-d$ (the translation is undone first, then "
+            r"turned and scaled).",
+        ]
+
+    def worked(self):
+        c, s = _cos_sin(self.theta_deg)
+        block = self._inverse_block()
+        column = block @ (-np.asarray(self.d, dtype=float))
+        M_inv = _affine2(block, column)
+        return Worked([
+            r"$M^{-1} = S(s_x, s_y)^{-1}\,R(\theta)^{-1}\,T(d)^{-1} = "
+            r"S(1/s_x, 1/s_y)\,R(-\theta)\,T(-d)$.",
+            rf"$R(-\theta) = \begin{{bmatrix}} {_num(c)} & {_num(s)} \\ {_num(-s)} & "
+            rf"{_num(c)} \end{{bmatrix}}$ (the transpose of $R(\theta)$); $S^{{-1}}$ divides "
+            rf"its first row by $s_x = {_num(self.sx)}$ and its second by "
+            rf"$s_y = {_num(self.sy)}$: ${_mat(block)}$.",
+            rf"$T(-d)$ acts first, so the last column is this block times "
+            rf"$-d = {_vec(-np.asarray(self.d))}$: ${_vec(column)}$.",
+            rf"$M^{{-1}} = {_mat(M_inv)}$. Check: $M^{{-1}} M = I$.",
+        ], M_inv)
 
     def statement(self):
         return (
@@ -283,7 +396,48 @@ class MirrorAboutLine(DrawnExercise):
                     r"the line is tilted by $\varphi$, so it must be turned onto the x axis "
                     r"($R(-\varphi)$) before mirroring and turned back ($R(\varphi)$) after.",
                     "no rotation"),
+            Mistake(self._mirror(self.c, self.phi_deg),
+                    _degrees_text(self.phi_deg, r"\varphi"), "degrees"),
         ]
+
+    def _block(self):
+        """R(phi) S(1, -1) R(-phi) = [[cos 2phi, sin 2phi], [sin 2phi, -cos 2phi]]."""
+        c2, s2 = _cos_sin(2 * self.phi_deg)
+        return np.array([[c2, s2], [s2, -c2]]), c2, s2
+
+    def hints(self):
+        L, c2, s2 = self._block()
+        column = np.asarray(self.c, dtype=float) - L @ self.c
+        return [
+            r"Mirroring about the x axis is easy, $S(1, -1)$. Move the line onto the x axis "
+            r"(first $T(-c)$, then $R(-\varphi)$), mirror, and move it back: "
+            r"$M = T(c)\,R(\varphi)\,S(1, -1)\,R(-\varphi)\,T(-c)$.",
+            r"The middle part is the mirroring about the parallel line through the origin, "
+            r"$R(\varphi)\,S(1,-1)\,R(-\varphi) = \begin{bmatrix} \cos 2\varphi & "
+            rf"\sin 2\varphi \\ \sin 2\varphi & -\cos 2\varphi \end{{bmatrix}}$; here "
+            rf"$2\varphi = {2 * self.phi_deg}^\circ$, $\cos 2\varphi = {_num(c2)}$, "
+            rf"$\sin 2\varphi = {_num(s2)}$.",
+            rf"The points of the line stay where they are, so the last column is $c - L\,c$ "
+            rf"with that block $L$: here ${_vec(column)}$.",
+        ]
+
+    def worked(self):
+        L, c2, s2 = self._block()
+        Lc = L @ np.asarray(self.c, dtype=float)
+        column = np.asarray(self.c, dtype=float) - Lc
+        M = _affine2(L, column)
+        return Worked([
+            r"$M = T(c)\,R(\varphi)\,S(1, -1)\,R(-\varphi)\,T(-c)$, so "
+            r"$M\,p = c + L\,(p - c)$ with $L = R(\varphi)\,S(1,-1)\,R(-\varphi)$.",
+            r"Multiplying out, $L = \begin{bmatrix} \cos^2\varphi - \sin^2\varphi & "
+            r"2 \sin\varphi\cos\varphi \\ 2 \sin\varphi\cos\varphi & "
+            r"\sin^2\varphi - \cos^2\varphi \end{bmatrix} = \begin{bmatrix} \cos 2\varphi "
+            r"& \sin 2\varphi \\ \sin 2\varphi & -\cos 2\varphi \end{bmatrix}$; with "
+            rf"$2\varphi = {2 * self.phi_deg}^\circ$: $L = {_mat(L)}$.",
+            rf"$L\,c = {_vec(Lc)}$, so the last column is $c - L\,c = {_vec(column)}$.",
+            rf"$M = {_mat(M)}$. Check: $M\,c = c$, and $M\,M = I$ (mirroring twice changes "
+            r"nothing).",
+        ], M)
 
     def statement(self):
         return (

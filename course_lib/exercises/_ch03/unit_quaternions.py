@@ -1,4 +1,4 @@
-"""Chapter 3 exercises: Quaternions.
+"""Chapter 3 exercises: quaternions from axes and angles, their products, slerp.
 
 Part of :mod:`course_lib.exercises.ch03`, which imports every exercise from here.
 """
@@ -7,20 +7,16 @@ import math
 
 import numpy as np
 
-from ... import format as fmt
 from ... import quaternions as quat
-from ..core import (DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, data_note, gap,
-                    is_unanswered, pick, read_floats, small_ints)
-from . import (_POINT_3, _QUATERNION, _deg, _fraction_matrix, _fraction_vector, _nice_axis,
-               _nice_quaternion, _vec)
+from ..core import DrawnExercise, Mistake, Worked, data_note, pick, small_ints
+from . import (_POINT_3, _QUATERNION, _SCALAR_LAST_TEXT, PointAnswer, _bar, _cos_sin, _deg,
+               _fraction_vector, _hamilton, _nice_axis, _nice_quaternion, _num, _par,
+               _scalar_last, _snap, _vec)
 
 __all__ = [
-    "AxisAngleOfMatrix",
     "ComposeRotationsWithQuaternions",
-    "MatrixToQuaternion",
     "QuaternionFromAxisAngle",
     "QuaternionProduct",
-    "QuaternionToMatrix",
     "RotatePointWithQuaternion",
     "SlerpMidpoint",
 ]
@@ -29,12 +25,15 @@ __all__ = [
 _QUATERNION_ANGLES = (30, 45, 60, 90, 120, 135, 150, 180, 240, 270, 300)
 
 
-def _scalar_last(q):
-    return np.roll(np.asarray(q, dtype=float), -1)
-
-
-_SCALAR_LAST_TEXT = (r"You wrote the scalar part last, $(x, y, z, s)$ (scipy's order). The "
-                     r"textbook and this course write it first: $q = (s, x, y, z)$.")
+def _half_angle_degrees_text(angle_deg, what):
+    """What a student is told who fed the half angle's degrees to cos and sin as radians."""
+    half = angle_deg / 2
+    c, _ = _cos_sin(half)
+    return (rf"You fed the half angle in degrees, ${_num(half)}$, to $\cos$ and $\sin$, which "
+            rf"expect radians ($\cos({_num(half)}\,\mathrm{{rad}}) = {_num(math.cos(half))}$, "
+            rf"whereas $\cos {_num(half)}^\circ = {_num(c)}$): {what} by {_num(angle_deg)} "
+            r"radians instead of degrees. Convert first with `np.radians` (or use the attribute "
+            r"in radians).")
 
 
 class QuaternionFromAxisAngle(DrawnExercise):
@@ -56,12 +55,13 @@ class QuaternionFromAxisAngle(DrawnExercise):
     title = "Quaternion from axis and angle"
     answer_form = "quaternion"
     what = "the quaternion"
+    may_coincide = ("conjugate",)          # a turn by 180 degrees is its own inverse
 
     def draw(self, rng):
         self.axis = _nice_axis(rng)
         self.theta_deg = int(pick(rng, _QUATERNION_ANGLES))
         self.theta = math.radians(self.theta_deg)
-        self.expected = quat.from_axis_angle(self.axis, self.theta)
+        self.expected = _snap(quat.from_axis_angle(self.axis, self.theta))
 
     def _unit_axis(self):
         return self.axis / np.linalg.norm(self.axis)
@@ -87,7 +87,41 @@ class QuaternionFromAxisAngle(DrawnExercise):
                     r"are swapped: the scalar part is $\cos\frac{\theta}{2}$ and the vector part "
                     r"$\sin\frac{\theta}{2}\,\hat n$ (a rotation by 0 must give $(1, 0, 0, 0)$).",
                     "sin and cos swapped"),
+            Mistake(quat.conjugate(self.expected), r"That is the conjugate "
+                    r"$\bar q = (\cos\frac{\theta}{2}, -\sin\frac{\theta}{2}\,\hat n)$, the "
+                    r"rotation by $-\theta$ (clockwise seen from the tip of $u$). For a "
+                    r"counter-clockwise turn by $+\theta$ the vector part points **along** the "
+                    r"axis: $+\sin\frac{\theta}{2}\,\hat n$.", "conjugate"),
         ]
+
+    def _numbers(self):
+        length = float(np.linalg.norm(self.axis))
+        c, s = _cos_sin(self.theta_deg / 2)
+        return length, self.axis / length, c, s
+
+    def hints(self):
+        length, n, c, s = self._numbers()
+        return [
+            r"A unit quaternion holds **half** the angle and the **unit** axis: "
+            r"$q = (\cos\frac{\theta}{2},\ \sin\frac{\theta}{2}\,\hat n)$.",
+            rf"$u$ has length ${_num(length)}$, so $\hat n = u / {_num(length)} = {_vec(n)}$; "
+            rf"half the angle is $\frac{{\theta}}{{2}} = {_num(self.theta_deg / 2)}^\circ$.",
+            rf"$\cos {_num(self.theta_deg / 2)}^\circ = {_num(c)}$ is the scalar part, and the "
+            rf"vector part is $\sin {_num(self.theta_deg / 2)}^\circ = {_num(s)}$ times "
+            r"$\hat n$.",
+        ]
+
+    def worked(self):
+        length, n, c, s = self._numbers()
+        q = np.concatenate([[c], s * n])
+        return Worked([
+            rf"Normalize the axis: $\lVert u \rVert = {_num(length)}$, "
+            rf"$\hat n = {_vec(n)}$.",
+            rf"Half the angle: $\frac{{\theta}}{{2}} = {_num(self.theta_deg / 2)}^\circ$, with "
+            rf"cosine ${_num(c)}$ and sine ${_num(s)}$.",
+            rf"$q = (\cos\frac{{\theta}}{{2}},\ \sin\frac{{\theta}}{{2}}\,\hat n) = "
+            rf"{_vec(q)}$ (length 1; $-q$ is the same rotation).",
+        ], q)
 
     def statement(self):
         return (
@@ -149,6 +183,37 @@ class QuaternionProduct(DrawnExercise):
                     "scalar sign"),
         ]
 
+    def _parts(self):
+        s1, v1 = float(self.q1[0]), np.asarray(self.q1[1:], dtype=float)
+        s2, v2 = float(self.q2[0]), np.asarray(self.q2[1:], dtype=float)
+        return s1, v1, s2, v2, float(v1 @ v2), np.cross(v1, v2)
+
+    def hints(self):
+        s1, v1, s2, v2, dot, cross = self._parts()
+        return [
+            r"Write each quaternion as a scalar and a vector, $q = (s, v)$; then "
+            r"$q_1 q_2 = (s_1 s_2 - v_1 \cdot v_2,\ s_1 v_2 + s_2 v_1 + v_1 \times v_2)$.",
+            rf"Here $s_1 = {_num(s1)}$, $v_1 = {_vec(v1)}$, $s_2 = {_num(s2)}$, "
+            rf"$v_2 = {_vec(v2)}$, and $v_1 \cdot v_2 = {_num(dot)}$: the scalar part is "
+            rf"${_num(s1 * s2)} - {_par(dot)}$.",
+            rf"The cross product, in this order, is $v_1 \times v_2 = {_vec(cross)}$; add it to "
+            rf"$s_1 v_2 + s_2 v_1 = {_vec(s1 * v2 + s2 * v1)}$.",
+        ]
+
+    def worked(self):
+        s1, v1, s2, v2, dot, cross = self._parts()
+        scalar = s1 * s2 - dot
+        vector = s1 * v2 + s2 * v1 + cross
+        return Worked([
+            rf"$q_1 = ({_num(s1)}, {_vec(v1)})$ and $q_2 = ({_num(s2)}, {_vec(v2)})$ as "
+            r"(scalar, vector).",
+            rf"Scalar part: $s_1 s_2 - v_1 \cdot v_2 = {_num(s1 * s2)} - ({_num(dot)}) = "
+            rf"{_num(scalar)}$.",
+            rf"Vector part: $s_1 v_2 + s_2 v_1 + v_1 \times v_2 = {_vec(s1 * v2)} + "
+            rf"{_vec(s2 * v1)} + {_vec(cross)} = {_vec(vector)}$.",
+            rf"$q_1 q_2 = {_vec(np.concatenate([[scalar], vector]))}$.",
+        ], np.concatenate([[scalar], vector]))
+
     def statement(self):
         return (
             rf"Compute the quaternion product $q_1\,q_2$ of $q_1 = {_quaternion_text(self.q1)}$ "
@@ -161,7 +226,7 @@ class QuaternionProduct(DrawnExercise):
 _ROTATION_ANGLES = (60, 90, 120, 180, 240, -90)
 
 
-class RotatePointWithQuaternion(DrawnExercise):
+class RotatePointWithQuaternion(PointAnswer, DrawnExercise):
     r"""Rotate a point with :math:`p' = q\,p\,\bar q`, given the axis and angle.
 
     Attributes: ``axis`` (not of unit length), ``theta_deg``, ``theta`` (radians), ``p``.
@@ -178,7 +243,6 @@ class RotatePointWithQuaternion(DrawnExercise):
     """
 
     title = "Rotate a point with a quaternion"
-    answer_form = "vector"
     what = "the rotated point"
 
     def draw(self, rng):
@@ -186,7 +250,7 @@ class RotatePointWithQuaternion(DrawnExercise):
         self.theta_deg = int(pick(rng, _ROTATION_ANGLES))
         self.theta = math.radians(self.theta_deg)
         self.p = small_ints(rng, 3, -2, 2)
-        self.expected = quat.rotate(quat.from_axis_angle(self.axis, self.theta), self.p)
+        self.expected = _snap(quat.rotate(quat.from_axis_angle(self.axis, self.theta), self.p))
 
     def mistakes(self):
         half = self.theta / 2
@@ -195,9 +259,12 @@ class RotatePointWithQuaternion(DrawnExercise):
         q = quat.from_axis_angle(self.axis, self.theta)
         return [
             Mistake(quat.rotate(quat.from_axis_angle(self.axis, -self.theta), self.p), r"The "
-                    r"point turned the wrong way: you computed $\bar q\,p\,q$ (or used "
-                    r"$-\theta$). The rotation by $+\theta$ is $p' = q\,p\,\bar q$ with "
-                    r"$q = (\cos\frac{\theta}{2}, \sin\frac{\theta}{2}\,\hat n)$.", "other way"),
+                    r"point turned the wrong way, by $-\theta$: you used the conjugate where "
+                    r"$q$ belongs, computing $\bar q\,p\,q$ (or built $q$ with "
+                    r"$-\sin\frac{\theta}{2}$). The rotation by $+\theta$ is "
+                    r"$p' = q\,p\,\bar q$ with "
+                    r"$q = (\cos\frac{\theta}{2}, +\sin\frac{\theta}{2}\,\hat n)$ on the left.",
+                    "other way"),
             Mistake(quat.rotate(quat.from_axis_angle(self.axis, 2 * self.theta), self.p), r"The "
                     r"point turned by $2\theta$: you built $q$ with the full angle. Use "
                     r"$\cos\frac{\theta}{2}$ and $\sin\frac{\theta}{2}$; the two products in "
@@ -210,7 +277,45 @@ class RotatePointWithQuaternion(DrawnExercise):
                     r"*sandwich* $q\,p\,\bar q$: multiply by the conjugate on the right as well, "
                     r"and read the point from the vector part (the scalar part is 0).",
                     "missing conjugate"),
+            Mistake(quat.rotate(quat.from_axis_angle(self.axis, self.theta_deg), self.p),
+                    _half_angle_degrees_text(self.theta_deg, "the point turned"), "degrees"),
         ]
+
+    def _quaternion(self):
+        length = float(np.linalg.norm(self.axis))
+        n = self.axis / length
+        c, s = _cos_sin(self.theta_deg / 2)
+        return length, n, np.concatenate([[c], s * n])
+
+    def hints(self):
+        length, n, q = self._quaternion()
+        qp = _hamilton(q, np.concatenate([[0.0], self.p]))
+        return [
+            r"Build the unit quaternion $q = (\cos\frac{\theta}{2},\ \sin\frac{\theta}{2}"
+            r"\,\hat n)$, write the point as $(0, p)$, and compute two Hamilton products: "
+            r"$(q\,p)\,\bar q$.",
+            rf"$\hat n = u / {_num(length)} = {_vec(n)}$ and "
+            rf"$\frac{{\theta}}{{2}} = {_num(self.theta_deg / 2)}^\circ$, so "
+            rf"$q = {_vec(q)}$ and $\bar q = {_vec(_bar(q))}$.",
+            rf"The first product is $q\,p = {_vec(qp)}$; multiply it by $\bar q$ on the "
+            r"right, and read the point from the vector part (the scalar part comes out 0).",
+        ]
+
+    def worked(self):
+        length, n, q = self._quaternion()
+        pure = np.concatenate([[0.0], self.p])
+        qp = _hamilton(q, pure)
+        result = _hamilton(qp, _bar(q))
+        return Worked([
+            rf"$\hat n = u / {_num(length)} = {_vec(n)}$; $\frac{{\theta}}{{2}} = "
+            rf"{_num(self.theta_deg / 2)}^\circ$, so $q = {_vec(q)}$ and "
+            rf"$\bar q = {_vec(_bar(q))}$.",
+            rf"With $p = (0, {_vec(self.p)})$: $q\,p = (-v \cdot p,\ s\,p + v \times p) = "
+            rf"{_vec(qp)}$, where $(s, v) = q$.",
+            rf"$(q\,p)\,\bar q = {_vec(result)}$: the scalar part is 0, as it must be for a "
+            r"point.",
+            rf"The rotated point is the vector part, $p' = {_vec(result[1:])}$.",
+        ], result[1:])
 
     def statement(self):
         return (
@@ -220,285 +325,6 @@ class RotatePointWithQuaternion(DrawnExercise):
             rf"quaternion $q$ and compute $p' = q\,p\,\bar q$, with $p$ written as the pure "
             rf"quaternion $(0, p)$." "\n\n" + _POINT_3 + "\n\n"
             + data_note("axis", "theta_deg", "theta", "p") + " (`.theta` is in radians.)")
-
-
-def _as_rotation_block(answer):
-    """A 4x4 homogeneous rotation given where a 3x3 one is asked, as its 3x3 block."""
-    arr = read_floats(answer)
-    if arr is not None and arr.shape == (4, 4) and np.allclose(arr[3], [0, 0, 0, 1]) \
-            and np.allclose(arr[:3, 3], 0):
-        return arr[:3, :3]
-    return answer
-
-
-class QuaternionToMatrix(DrawnExercise):
-    r"""The rotation matrix of a unit quaternion with rational components.
-
-    The top-left entry is :math:`1 - 2y^2 - 2z^2` (the compendium prints :math:`1 - 2y^2`).
-
-    Attributes: ``q`` (scalar first, unit length).
-
-    Examples
-    --------
-    >>> ex = QuaternionToMatrix(seed=12)
-    >>> ex.check(ex.expected).status
-    'correct'
-    >>> s, x, y, z = ex.q
-    >>> printed = ex.expected.copy()
-    >>> printed[0, 0] = 1 - 2 * y**2
-    >>> ex.check(printed).diagnosis
-    'compendium top-left'
-    >>> ex.check(ex.expected.T).diagnosis
-    'transposed'
-    """
-
-    title = "Rotation matrix of a quaternion"
-
-    def draw(self, rng):
-        self.ints, self.n = _nice_quaternion(rng)
-        self.q = self.ints / self.n
-        self.expected = quat.to_matrix(self.q)
-
-    def mistakes(self):
-        y = self.q[2]
-        printed = self.expected.copy()
-        printed[0, 0] = 1 - 2 * y * y
-        return [
-            Mistake(printed, r"Only the top-left entry is off: it is $1 - 2y^2 - 2z^2$. (The "
-                    r"compendium prints $1 - 2y^2$, a misprint: compare with the other two "
-                    r"diagonal entries, which each subtract two squares.)", "compendium top-left"),
-            Mistake(self.expected.T, r"Your matrix is transposed, which is the rotation the "
-                    r"other way (the rotation of $\bar q$). Check the signs of the $s$ terms: "
-                    r"the first row is $(1 - 2y^2 - 2z^2,\ 2xy - 2sz,\ 2xz + 2sy)$.",
-                    "transposed"),
-            Mistake((np.eye(3) + self.expected) / 2, r"Every factor 2 of the formula is "
-                    r"missing (e.g. $1 - y^2 - z^2$ instead of $1 - 2y^2 - 2z^2$, $xy - sz$ "
-                    r"instead of $2xy - 2sz$).", "factor 2 missing"),
-        ]
-
-    def _check(self, answer):
-        return super()._check(_as_rotation_block(answer))
-
-    def statement(self):
-        return (
-            rf"Give the $3 \times 3$ rotation matrix $R$ of the unit quaternion "
-            rf"$q = {_fraction_vector(self.ints, self.n)}$ (scalar first, $(s, x, y, z)$), the "
-            rf"matrix with $R\,p = q\,p\,\bar q$ for every point $p$." "\n\n"
-            r"**Answer:** the $3 \times 3$ matrix as a numpy array. " + DECIMALS + "\n\n"
-            + data_note("q"))
-
-
-_MATRIX_HINT = (r"Careful: if $s$ turns out to be 0 (a turn by $180^\circ$), a recipe that "
-                r"divides by $s$ fails; find the largest of $s^2, x^2, y^2, z^2$ from the "
-                r"diagonal first and divide by that component instead.")
-
-
-class MatrixToQuaternion(DrawnExercise):
-    r"""The unit quaternion of a rotation matrix, including turns by 180 degrees (:math:`s = 0`).
-
-    About a third of the seeds give a turn by 180 degrees, where the recipe
-    :math:`x = (m_{21} - m_{12}) / 4s` divides by zero.
-
-    Attributes: ``R`` (3x3 rotation matrix).
-
-    Examples
-    --------
-    >>> ex = MatrixToQuaternion(seed=13)
-    >>> ex.check(ex.expected).status, ex.check(-ex.expected).status
-    ('correct', 'correct')
-    >>> ex.check(np.roll(ex.expected, -1)).diagnosis
-    'scalar last'
-    >>> half_turn = MatrixToQuaternion(seed=2)        # a turn by 180 degrees: s = 0
-    >>> half_turn.half_turn, float(half_turn.expected[0])
-    (True, 0.0)
-    >>> half_turn.check([np.nan] * 4).diagnosis      # the recipe that divides by s
-    'division by zero'
-    """
-
-    title = "Quaternion of a rotation matrix"
-    answer_form = "quaternion"
-    what = "the quaternion"
-    may_coincide = ("conjugate",)
-
-    def draw(self, rng):
-        self.half_turn = bool(rng.random() < 1 / 3)
-        ints, n = _nice_quaternion(rng, zero_scalar=self.half_turn)
-        while not self.half_turn and ints[0] == 0:
-            ints, n = _nice_quaternion(rng)
-        if ints[0] < 0:
-            ints = -ints
-        self.R = quat.to_matrix(ints / n)
-        self._ints, self._n2 = ints, n * n
-        self.expected = quat.from_matrix(self.R)
-
-    def mistakes(self):
-        found = [
-            Mistake(quat.conjugate(self.expected), r"You found the conjugate $\bar q$, the "
-                    r"rotation the other way (as if from $R^T$). The differences are "
-                    r"$4sx = m_{21} - m_{12}$, $4sy = m_{02} - m_{20}$, "
-                    r"$4sz = m_{10} - m_{01}$ (row, column, counted from 0).", "conjugate"),
-            Mistake(_scalar_last(self.expected), _SCALAR_LAST_TEXT, "scalar last"),
-        ]
-        if not self.half_turn:
-            s, v = self.expected[0], self.expected[1:]
-            found.append(Mistake(np.concatenate([[s], 2 * v]), r"The vector part is twice too "
-                                 r"long: $m_{21} - m_{12} = 4sx$, so divide by $4s$, not $2s$.",
-                                 "divided by 2s"))
-        return found
-
-    def _check(self, answer):
-        if self.half_turn and _has_nan_or_inf(answer):
-            return Feedback("invalid", r"Your answer contains NaN or infinity. This matrix is "
-                            r"a turn by $180^\circ$, so $s = \frac12\sqrt{1 + m_{00} + m_{11} "
-                            r"+ m_{22}} = 0$ and the recipe that divides by $4s$ breaks down. "
-                            r"Use the diagonal: $4x^2 = 1 + m_{00} - m_{11} - m_{22}$ (and "
-                            r"likewise for $y$, $z$); take the largest, then e.g. "
-                            r"$y = (m_{01} + m_{10}) / 4x$.", "division by zero")
-        return super()._check(answer)
-
-    def statement(self):
-        return (
-            rf"Give a unit quaternion $q$ of the rotation matrix" "\n\n"
-            rf"$$R = {_fraction_matrix(self.R, self._n2)}.$$" "\n\n" + _MATRIX_HINT + "\n\n"
-            + _QUATERNION + r" Both $q$ and $-q$ are accepted: they describe the same rotation."
-            + "\n\n" + data_note("R"))
-
-
-def _has_nan_or_inf(answer):
-    """Whether `answer` reads as numbers of which some are NaN or infinite."""
-    if is_unanswered(answer) or isinstance(answer, (str, bytes, dict)):
-        return False
-    try:
-        arr = np.asarray(answer, dtype=float)
-    except (TypeError, ValueError):
-        return False
-    return not np.isfinite(arr).all()
-
-
-def _same_rotation(q1, q2, atol=2e-3):
-    """Whether the quaternions are the same rotation (equal up to sign)."""
-    return gap(q1, q2, sign_free=True) <= atol
-
-
-def _axis_angle_quaternion(axis, angle):
-    half = angle / 2
-    return np.concatenate([[math.cos(half)], math.sin(half) * axis])
-
-
-class AxisAngleOfMatrix(DrawnExercise):
-    r"""Axis and angle of a rotation matrix; the answer is the tuple ``(axis, angle_radians)``.
-
-    Any description of the same rotation is right: ``(-axis, -angle)``, or the angle plus a
-    whole number of turns. The answer is judged by the rotation it describes.
-
-    Attributes: ``R`` (3x3 rotation matrix).
-
-    Examples
-    --------
-    >>> ex = AxisAngleOfMatrix(seed=14)
-    >>> axis, angle = ex.expected
-    >>> ex.check((axis, angle)).status, ex.check((-axis, -angle)).status
-    ('correct', 'correct')
-    >>> ex.check((axis, np.degrees(angle))).diagnosis
-    'degrees'
-    >>> ex.check((-axis, angle)).diagnosis
-    'opposite rotation'
-    >>> ex.check((3 * axis, angle)).diagnosis
-    'not normalized'
-    >>> ex.check((axis, ...)).status, ex.check({"axis": axis}).status
-    ('unanswered', 'invalid')
-    """
-
-    title = "Axis and angle of a rotation matrix"
-    answer_form = "custom"
-
-    def draw(self, rng):
-        ints, n = _nice_quaternion(rng)
-        self._ints = ints
-        if ints[0] < 0:
-            ints = -ints
-        self.q = ints / n
-        self.R = quat.to_matrix(self.q)
-        self._n2 = n * n
-        axis, angle = quat.to_axis_angle(self.q)
-        self.expected = (axis, float(angle))
-
-    def acceptable(self):
-        return self._ints[0] != 0 and bool(np.any(self._ints[1:]))
-
-    def _check(self, answer):
-        """Judge ``answer = (axis, angle_radians)`` by the rotation it describes."""
-        parsed = _read_axis_angle(answer)
-        if isinstance(parsed, Feedback):
-            return parsed
-        axis, angle = parsed
-        length = float(np.linalg.norm(axis))
-        if length < 1e-9:
-            return Feedback("invalid", "Your axis is the zero vector, which has no direction.",
-                            "zero axis")
-        unit = axis / length
-        if _same_rotation(_axis_angle_quaternion(unit, angle), self.q):
-            if abs(length - 1) > 2e-3:
-                return Feedback("wrong", f"Right direction and angle, but your axis has length "
-                                f"{fmt.number(length)}: give a unit vector (divide the axis by "
-                                "its length).", "not normalized")
-            return Feedback("correct", "The axis and the angle are right (they describe the "
-                            "rotation of $R$).")
-        if _same_rotation(_axis_angle_quaternion(unit, math.radians(angle)), self.q):
-            return Feedback("wrong", f"Your angle is in degrees; give it in radians "
-                            f"({fmt.number(angle)}° = {fmt.number(math.radians(angle))} rad).",
-                            "degrees")
-        if _same_rotation(_axis_angle_quaternion(unit, -angle), self.q):
-            return Feedback("wrong", r"You describe the inverse rotation: the axis is reversed "
-                            r"(or the angle has the wrong sign). The vector of differences "
-                            r"$(m_{21} - m_{12},\ m_{02} - m_{20},\ m_{10} - m_{01})$ (indices "
-                            r"row, column, counted from 0) equals $2 \sin\theta\,\hat n$: it "
-                            r"points along the axis, in the direction from which the turn looks "
-                            r"counter-clockwise.", "opposite rotation")
-        expected_axis, expected_angle = self.expected
-        if abs(abs(float(unit @ expected_axis)) - 1) < 2e-3:
-            return Feedback("wrong", r"The axis is right but the angle is not. From the trace: "
-                            r"$\cos\theta = (m_{00} + m_{11} + m_{22} - 1) / 2$.",
-                            "angle differs")
-        turns = (abs(angle) - expected_angle) / (2 * math.pi)
-        if abs(turns - round(turns)) < 1e-3:
-            return Feedback("wrong", r"The angle is right but the axis is not. The axis is along "
-                            r"$(m_{21} - m_{12},\ m_{02} - m_{20},\ m_{10} - m_{01})$ (row, "
-                            r"column, counted from 0); it is the vector that $R$ leaves "
-                            r"unchanged, $R\,\hat n = \hat n$.", "axis differs")
-        return Feedback("wrong", r"Neither the axis nor the angle is right. The angle follows "
-                        r"from the trace, $\cos\theta = (\operatorname{tr} R - 1)/2$, and the "
-                        r"axis is along $(m_{21} - m_{12},\ m_{02} - m_{20},\ m_{10} - m_{01})$.",
-                        "both differ")
-
-    def statement(self):
-        return (
-            rf"The matrix" "\n\n" rf"$$R = {_fraction_matrix(self.R, self._n2)}$$" "\n\n"
-            rf"is a rotation about "
-            rf"an axis through the origin. Find a unit vector $\hat n$ along its axis and the "
-            rf"angle $\theta$ of the rotation (counter-clockwise when seen from the tip of "
-            rf"$\hat n$)." "\n\n"
-            r"**Answer:** a tuple `(axis, angle)`: `axis` a list of 3 numbers of unit length, "
-            r"`angle` in **radians**. Any description of the same rotation is accepted (e.g. "
-            r"$(-\hat n, -\theta)$). " + DECIMALS + "\n\n" + data_note("R"))
-
-
-def _read_axis_angle(answer):
-    """``(axis, angle)`` as a float vector and a float, or a Feedback saying why not."""
-    if is_unanswered(answer) or (isinstance(answer, (tuple, list)) and len(answer) == 2
-                                 and any(is_unanswered(part) for part in answer)):
-        return Feedback("unanswered", UNANSWERED)
-    if not isinstance(answer, (tuple, list)) or len(answer) != 2:
-        return Feedback("invalid", "Give a tuple of two things, `(axis, angle)`: the axis as 3 "
-                        "numbers and the angle in radians as one number.", "unreadable")
-    axis, angle = (read_floats(part) for part in answer)
-    if axis is None or axis.shape != (3,):
-        return Feedback("invalid", "The axis (first item) should be 3 numbers, e.g. "
-                        "`[0.6, 0, 0.8]`.", "unreadable")
-    if angle is None or angle.size != 1:
-        return Feedback("invalid", "The angle (second item) should be one number, in radians.",
-                        "unreadable")
-    return axis, float(angle.ravel()[0])
 
 
 _COMPOSE_ANGLES = (60, 90, 120, 180, -90)
@@ -539,7 +365,7 @@ class ComposeRotationsWithQuaternions(DrawnExercise):
         self.theta2_deg = int(pick(rng, _COMPOSE_ANGLES))
         self.theta1 = math.radians(self.theta1_deg)
         self.theta2 = math.radians(self.theta2_deg)
-        self.expected = quat.multiply(*self._quaternions()[::-1])
+        self.expected = _snap(quat.multiply(*self._quaternions()[::-1]))
 
     def _quaternions(self, factor=1.0):
         return (quat.from_axis_angle(self.axis1, factor * self.theta1),
@@ -548,7 +374,7 @@ class ComposeRotationsWithQuaternions(DrawnExercise):
     def mistakes(self):
         q1, q2 = self._quaternions()
         full1, full2 = self._quaternions(2.0)
-        return [
+        found = [
             Mistake(quat.multiply(q1, q2), r"You computed $q_1\,q_2$, which rotates by $q_2$ "
                     r"first. Applying $q_1$ and then $q_2$ gives "
                     r"$q_2 (q_1 p \bar q_1) \bar q_2 = (q_2 q_1)\, p\, \overline{q_2 q_1}$: the "
@@ -558,7 +384,62 @@ class ComposeRotationsWithQuaternions(DrawnExercise):
             Mistake(quat.multiply(full2, full1), r"The order is right, but you built $q_1$ and "
                     r"$q_2$ with the full angles: each quaternion holds half its angle, "
                     r"$(\cos\frac{\theta}{2}, \sin\frac{\theta}{2}\,\hat n)$.", "full angle"),
+            Mistake(quat.multiply(quat.from_axis_angle(self.axis2, self.theta2_deg),
+                                  quat.from_axis_angle(self.axis1, self.theta1_deg)),
+                    rf"You fed the half angles in degrees "
+                    rf"(${_num(self.theta1_deg / 2)}$ and ${_num(self.theta2_deg / 2)}$) to "
+                    r"$\cos$ and $\sin$, which expect radians, so each factor turns by its "
+                    r"angle's number of *radians*. Convert first with `np.radians` (or use "
+                    r"`.theta1` and `.theta2`, which are in radians).", "degrees"),
         ]
+        if 180 not in (self.theta1_deg, self.theta2_deg):
+            # with a half turn the two conjugates give the rotation of q1 q2 ("wrong order")
+            found.append(Mistake(
+                quat.multiply(quat.conjugate(q2), quat.conjugate(q1)), r"The order is right, "
+                r"but both factors are conjugates, $\bar q_2\,\bar q_1$: each turns by "
+                r"$-\theta_i$. For a counter-clockwise turn by $+\theta$ about an axis the vector "
+                r"part is $+\sin\frac{\theta}{2}$ times the axis, e.g. "
+                r"$(\cos\frac{\theta}{2}, \sin\frac{\theta}{2}, 0, 0)$ about x.", "conjugate"))
+        return found
+
+    def _factors(self):
+        c1, s1 = _cos_sin(self.theta1_deg / 2)
+        c2, s2 = _cos_sin(self.theta2_deg / 2)
+        q1 = np.concatenate([[c1], s1 * self.axis1])
+        q2 = np.concatenate([[c2], s2 * self.axis2])
+        return q1, q2
+
+    def hints(self):
+        q1, q2 = self._factors()
+        return [
+            r"Rotating by $q_1$ and then by $q_2$ is $q_2 (q_1 p \bar q_1) \bar q_2 = "
+            r"(q_2 q_1)\,p\,\overline{(q_2 q_1)}$: the first rotation stands on the **right**, "
+            r"$q = q_2\,q_1$.",
+            rf"Each factor holds half its angle: $q_1 = (\cos\frac{{\theta_1}}{{2}}, "
+            rf"\sin\frac{{\theta_1}}{{2}}\,e_{self.axis1_name}) = {_vec(q1)}$ and "
+            rf"$q_2 = {_vec(q2)}$.",
+            rf"With $q_2 = (s_2, v_2)$, $q_1 = (s_1, v_1)$: $q = (s_2 s_1 - v_2 \cdot v_1,\ "
+            rf"s_2 v_1 + s_1 v_2 + v_2 \times v_1)$; here $v_2 \times v_1 = "
+            rf"{_vec(np.cross(q2[1:], q1[1:]))}$.",
+        ]
+
+    def worked(self):
+        q1, q2 = self._factors()
+        s1, v1, s2, v2 = q1[0], q1[1:], q2[0], q2[1:]
+        scalar = s2 * s1 - v2 @ v1
+        vector = s2 * v1 + s1 * v2 + np.cross(v2, v1)
+        q = np.concatenate([[scalar], vector])
+        return Worked([
+            rf"$q_1 = {_vec(q1)}$ (half of ${_num(self.theta1_deg)}^\circ$ about "
+            rf"{self.axis1_name}) and $q_2 = {_vec(q2)}$ (half of "
+            rf"${_num(self.theta2_deg)}^\circ$ about {self.axis2_name}).",
+            r"$q_1$ acts first, so it stands on the right: $q = q_2\,q_1$.",
+            rf"Scalar part: $s_2 s_1 - v_2 \cdot v_1 = {_num(s2 * s1)} - ({_num(v2 @ v1)}) = "
+            rf"{_num(scalar)}$.",
+            rf"Vector part: $s_2 v_1 + s_1 v_2 + v_2 \times v_1 = {_vec(s2 * v1)} + "
+            rf"{_vec(s1 * v2)} + {_vec(np.cross(v2, v1))} = {_vec(vector)}$.",
+            rf"$q = {_vec(q)}$.",
+        ], q)
 
     def statement(self):
         return (
@@ -602,7 +483,7 @@ class SlerpMidpoint(DrawnExercise):
         ints1, n1 = _nice_quaternion(rng)
         self._ints0, self._n0, self._ints1, self._n1 = ints0, n0, ints1, n1
         self.q0, self.q1 = ints0 / n0, ints1 / n1
-        self.expected = quat.slerp(self.q0, self.q1, 0.5)
+        self.expected = _snap(quat.slerp(self.q0, self.q1, 0.5))
 
     def mistakes(self):
         dot = float(self.q0 @ self.q1)
@@ -620,7 +501,47 @@ class SlerpMidpoint(DrawnExercise):
         return found
 
     def acceptable(self):
-        return 0.1 < abs(float(self.q0 @ self.q1)) < 0.95
+        # no component so small that 2 decimals keep none of its digits (nor the angle tiny)
+        small = np.abs(self.expected)
+        return 0.1 < abs(float(self.q0 @ self.q1)) < 0.95 \
+            and not np.any((small > 0) & (small < 0.012))
+
+    def _numbers(self):
+        dot = float(self.q0 @ self.q1)
+        near = self.q1 if dot >= 0 else -self.q1
+        omega = math.acos(abs(dot))
+        weight = math.sin(omega / 2) / math.sin(omega)
+        return dot, near, omega, weight
+
+    def hints(self):
+        dot, near, omega, weight = self._numbers()
+        flip = (rf"Here $q_0 \cdot q_1 = {_num(dot)} < 0$: use $-q_1 = {_vec(near)}$ instead, "
+                r"the same orientation but nearer." if dot < 0 else
+                rf"Here $q_0 \cdot q_1 = {_num(dot)} > 0$: $q_1$ is already on the near side.")
+        return [
+            r"Slerp: $q(t) = \frac{\sin((1-t)\Omega)\,q_0 + \sin(t\Omega)\,q_1}{\sin\Omega}$ "
+            r"with $\cos\Omega = q_0 \cdot q_1$. First make sure you go the short way: if "
+            r"$q_0 \cdot q_1 < 0$, replace $q_1$ by $-q_1$.",
+            flip,
+            rf"$\Omega = \arccos {_num(abs(dot))} = {_num(omega)}$ rad; at $t = \tfrac12$ both "
+            rf"weights are $\sin(\Omega/2)/\sin\Omega = {_num(weight)}$, so the answer is "
+            r"the sum of $q_0$ and the nearer of $\pm q_1$, scaled to length 1.",
+        ]
+
+    def worked(self):
+        dot, near, omega, weight = self._numbers()
+        total = self.q0 + near
+        q = weight * total
+        return Worked([
+            rf"$q_0 \cdot q_1 = {_num(dot)}$"
+            + (r" $< 0$: go the short way with $-q_1$." if dot < 0 else r" $> 0$: keep $q_1$.")
+            + rf" So $q_1' = {_vec(near)}$.",
+            rf"$\cos\Omega = {_num(abs(dot))}$, $\Omega = {_num(omega)}$ rad.",
+            rf"At $t = \tfrac12$ both weights are $\frac{{\sin(\Omega/2)}}{{\sin\Omega}} = "
+            rf"{_num(weight)}$: $q = {_num(weight)}\,(q_0 + q_1') = {_num(weight)} \cdot "
+            rf"{_vec(total)}$.",
+            rf"$q = {_vec(q)}$ (length 1, as slerp keeps it).",
+        ], q)
 
     def statement(self):
         return (

@@ -5,6 +5,7 @@ The exercises are in one module per topic of this package; import them from
 """
 
 from ... import format as fmt
+from .._ch03 import PointAnswer, _par, _snap  # noqa: F401  (points read alike in ch03, ch04)
 from ..core import DECIMALS
 
 
@@ -14,6 +15,7 @@ from ..core import DECIMALS
 
 _vec = fmt.vector_latex
 _num = fmt.number
+_mat = fmt.matrix_latex
 
 
 def _signs(rng, n):
@@ -27,3 +29,4 @@ def _deg(angle_deg):
 _MATRIX_4 = "**Answer:** the $4 \\times 4$ matrix as a numpy array. " + DECIMALS
 _POINT_3 = ("**Answer:** the point as a list of 3 numbers `[x, y, z]` (ordinary coordinates; a "
             "homogeneous `[x, y, z, 1]` is accepted too). " + DECIMALS)
+

@@ -7,8 +7,8 @@ import numpy as np
 
 from ... import transforms as tf
 from ... import viewing
-from ..core import DECIMALS, DrawnExercise, Mistake, data_note, pick
-from . import _MATRIX_4, _num, _vec
+from ..core import DECIMALS, DrawnExercise, Mistake, Worked, data_note, pick
+from . import _MATRIX_4, PointAnswer, _mat, _num, _par, _vec
 
 __all__ = [
     "ViewportMatrix",
@@ -22,6 +22,28 @@ def _draw_viewport(ex, rng):
     ex.xmax = ex.xmin + float(pick(rng, (320, 400, 640, 800)))
     ex.ymax = ex.ymin + float(pick(rng, (240, 300, 480, 600)))
     ex.zmin, ex.zmax = 0.0, 1.0
+
+
+def _halves_and_centres(ex):
+    """Half the size and the centre of the viewport along x, y and depth."""
+    half = np.array([ex.xmax - ex.xmin, ex.ymax - ex.ymin, ex.zmax - ex.zmin]) / 2
+    centre = np.array([ex.xmax + ex.xmin, ex.ymax + ex.ymin, ex.zmax + ex.zmin]) / 2
+    return half, centre
+
+
+def _viewport_hints(ex):
+    half, centre = _halves_and_centres(ex)
+    return [
+        r"Each axis is mapped on its own: the cube's $-1 \dots 1$ goes onto "
+        r"$x_{min} \dots x_{max}$ (and likewise for $y$ and depth), so scale by half the "
+        r"viewport's size and shift to its centre.",
+        rf"Half the sizes: $\frac{{x_{{max}}-x_{{min}}}}{{2}} = {_num(half[0])}$, "
+        rf"$\frac{{y_{{max}}-y_{{min}}}}{{2}} = {_num(half[1])}$, "
+        rf"$\frac{{z_{{max}}-z_{{min}}}}{{2}} = {_num(half[2])}$ (depth has its own range).",
+        rf"The centres: $\frac{{x_{{max}}+x_{{min}}}}{{2}} = {_num(centre[0])}$, "
+        rf"$\frac{{y_{{max}}+y_{{min}}}}{{2}} = {_num(centre[1])}$, "
+        rf"$\frac{{z_{{max}}+z_{{min}}}}{{2}} = {_num(centre[2])}$: CSS 0 goes there.",
+    ]
 
 
 def _viewport_words(ex):
@@ -81,6 +103,22 @@ class ViewportMatrix(DrawnExercise):
                     r"$+\frac{y_{max}-y_{min}}{2}$.", "y flipped"),
         ]
 
+    def hints(self):
+        return _viewport_hints(self)
+
+    def worked(self):
+        half, centre = _halves_and_centres(self)
+        M = np.diag([half[0], half[1], half[2], 1.0])
+        M[:3, 3] = centre
+        return Worked([
+            rf"Half the sizes: $({_num(self.xmax)} - {_num(self.xmin)})/2 = {_num(half[0])}$, "
+            rf"$({_num(self.ymax)} - {_num(self.ymin)})/2 = {_num(half[1])}$, "
+            rf"$({_num(self.zmax)} - {_num(self.zmin)})/2 = {_num(half[2])}$: the diagonal.",
+            rf"The centres: ${_vec(centre)}$: the last column (CSS 0 goes to the centre).",
+            rf"$M_{{CSS \to VCS}} = {_mat(M)}$. Check: $(-1, -1, -1)$ goes to "
+            rf"$({_num(self.xmin)}, {_num(self.ymin)}, {_num(self.zmin)})$.",
+        ], M)
+
     def statement(self):
         return (
             _viewport_words(self) + r" Give the matrix $M_{CSS \to VCS}$ that maps the cube "
@@ -90,7 +128,7 @@ class ViewportMatrix(DrawnExercise):
             + data_note("xmin", "ymin", "xmax", "ymax", "zmin", "zmax"))
 
 
-class ViewportPixel(DrawnExercise):
+class ViewportPixel(PointAnswer, DrawnExercise):
     r"""The viewport coordinates (pixel x, y and depth) of a point of canonical screen space.
 
     Attributes: ``xmin``, ``ymin``, ``xmax``, ``ymax``, ``zmin``, ``zmax``, ``q`` (the CSS point).
@@ -106,7 +144,6 @@ class ViewportPixel(DrawnExercise):
     """
 
     title = "From CSS to the viewport"
-    answer_form = "point"
     what = "the point in viewport coordinates"
 
     def draw(self, rng):
@@ -143,5 +180,26 @@ class ViewportPixel(DrawnExercise):
         return (
             _viewport_words(self) + rf" A point has the CSS coordinates $q = {_vec(self.q)}$. "
             r"Where does it land: which pixel coordinates $(x_v, y_v)$ and which depth $z_v$?"
-            "\n\n" r"**Answer:** a list of 3 numbers `[x_v, y_v, z_v]`. " + DECIMALS + "\n\n"
+            "\n\n" r"**Answer:** a list of 3 numbers `[x_v, y_v, z_v]` (not rounded to whole "
+            r"pixels). " + DECIMALS + "\n\n"
             + data_note("xmin", "ymin", "xmax", "ymax", "zmin", "zmax", "q"))
+
+    def hints(self):
+        return _viewport_hints(self)[:2] + [
+            r"So $x_v = \frac{x_{max}-x_{min}}{2}\,x + \frac{x_{max}+x_{min}}{2}$ and so on; "
+            rf"for $x = {_num(self.q[0])}$ that is "
+            rf"${_num(_halves_and_centres(self)[0][0])} \cdot {_par(self.q[0])} + "
+            rf"{_num(_halves_and_centres(self)[1][0])}$.",
+        ]
+
+    def worked(self):
+        half, centre = _halves_and_centres(self)
+        point = half * self.q + centre
+        names = ("x", "y", "z")
+        return Worked([
+            rf"Half the sizes ${_vec(half)}$ and the centres ${_vec(centre)}$ of the viewport and "
+            r"the depth range.",
+            ", ".join(rf"${names[k]}_v = {_num(half[k])} \cdot {_par(self.q[k])} + "
+                      rf"{_num(centre[k])} = {_num(point[k])}$" for k in range(3)) + ".",
+            rf"The point lands at ${_vec(point)}$ (pixels, y up, and depth).",
+        ], point)

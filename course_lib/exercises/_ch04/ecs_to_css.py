@@ -10,8 +10,8 @@ import numpy as np
 from ... import format as fmt
 from ... import transforms as tf
 from ... import viewing
-from ..core import DECIMALS, DrawnExercise, Mistake, data_note, pick
-from . import _MATRIX_4, _POINT_3, _deg, _num, _vec
+from ..core import DECIMALS, DrawnExercise, Mistake, Worked, data_note, pick
+from . import _MATRIX_4, _POINT_3, PointAnswer, _deg, _mat, _num, _par, _snap, _vec
 
 __all__ = [
     "CssDepth",
@@ -19,6 +19,14 @@ __all__ = [
     "PerspectiveDivide",
     "PerspectiveMatrix",
 ]
+
+
+def _swapped_text(n, f):
+    """What a student is told who swapped near and far in a projection matrix."""
+    return (rf"You swapped near and far: $n$ is the distance of the **near** plane, the smaller "
+            rf"one (here $n = {_num(n)}$, $f = {_num(f)}$). With the two exchanged both entries "
+            r"of the depth row change sign, and the near plane would go to $z = +1$, the far "
+            r"one to $-1$. Check: $z_e = -n$ must give $-1$.")
 
 
 def _frustum_formula(r, t, n, f):
@@ -59,7 +67,7 @@ class PerspectiveMatrix(DrawnExercise):
         self.aspect = float(pick(rng, (1.0, 1.5, 2.0)))
         self.near = float(pick(rng, (1, 2)))
         self.far = float(pick(rng, (3, 4, 5, 10, 11)))
-        self.expected = viewing.perspective(self.fov, self.aspect, self.near, self.far)
+        self.expected = _snap(viewing.perspective(self.fov, self.aspect, self.near, self.far))
 
     def mistakes(self):
         n, f, a = self.near, self.far, self.aspect
@@ -101,7 +109,49 @@ class PerspectiveMatrix(DrawnExercise):
             found.append(Mistake(_frustum_formula(t / a, t, n, f), r"The aspect ratio is "
                                  r"width over height, so the window is wider than tall: "
                                  r"$r = t \cdot aspect$ (you divided).", "aspect inverted"))
+        found.append(Mistake(_frustum_formula(a * t * f / n, t * f / n, f, n),
+                             _swapped_text(n, f), "near and far swapped"))
         return found
+
+    def _numbers(self):
+        n, f = self.near, self.far
+        tan = math.tan(math.radians(self.fov_deg / 2))
+        t = n * tan
+        r = t * self.aspect
+        return n, f, tan, t, r
+
+    def hints(self):
+        n, f, tan, t, r = self._numbers()
+        return [
+            r"The near plane's window has half-height $t = n \tan\frac{\theta}{2}$ and "
+            r"half-width $r = t \cdot aspect$; the matrix is $\begin{bmatrix} n/r & 0 & 0 & 0 "
+            r"\\ 0 & n/t & 0 & 0 \\ 0 & 0 & -\frac{f+n}{f-n} & -\frac{2fn}{f-n} \\ 0 & 0 & -1 "
+            r"& 0 \end{bmatrix}$.",
+            rf"Half the field of view is ${_num(self.fov_deg / 2)}^\circ$, "
+            rf"$\tan {_num(self.fov_deg / 2)}^\circ = {_num(tan)}$: $t = {_num(t)}$ and "
+            rf"$r = {_num(r)}$, so $n/r = {_num(n / r)}$ and $n/t = {_num(n / t)}$.",
+            rf"The depth row: $-\frac{{f+n}}{{f-n}} = {_num(-(f + n) / (f - n))}$ and "
+            rf"$-\frac{{2fn}}{{f-n}} = {_num(-2 * f * n / (f - n))}$; the last row "
+            r"$(0, 0, -1, 0)$ makes $w = -z_e$.",
+        ]
+
+    def worked(self):
+        n, f, tan, t, r = self._numbers()
+        P = np.zeros((4, 4))
+        P[0, 0], P[1, 1] = n / r, n / t
+        P[2, 2], P[2, 3] = -(f + n) / (f - n), -2 * f * n / (f - n)
+        P[3, 2] = -1.0
+        return Worked([
+            rf"$t = n \tan\frac{{\theta}}{{2}} = {_num(n)} \tan {_num(self.fov_deg / 2)}^\circ "
+            rf"= {_num(t)}$ and $r = t \cdot aspect = {_num(t)} \cdot {_num(self.aspect)} = "
+            rf"{_num(r)}$.",
+            rf"$n/r = {_num(n / r)}$ and $n/t = {_num(n / t)}$.",
+            rf"Depth: $-\frac{{f+n}}{{f-n}} = -\frac{{{_num(f + n)}}}{{{_num(f - n)}}} = "
+            rf"{_num(P[2, 2])}$, $-\frac{{2fn}}{{f-n}} = -\frac{{{_num(2 * f * n)}}}"
+            rf"{{{_num(f - n)}}} = {_num(P[2, 3])}$ (then $z_e = -n \to -1$ and "
+            r"$z_e = -f \to +1$).",
+            rf"With the last row $(0, 0, -1, 0)$: $M = {_mat(P)}$.",
+        ], P)
 
     def statement(self):
         return (
@@ -121,7 +171,7 @@ class PerspectiveMatrix(DrawnExercise):
 _NEAR_FAR = ((1, 3), (1, 5), (2, 6), (1, 9), (2, 10), (3, 9), (1, 2))
 
 
-class PerspectiveDivide(DrawnExercise):
+class PerspectiveDivide(PointAnswer, DrawnExercise):
     r"""A point of eye space through a perspective matrix and the homogeneous divide.
 
     :math:`(x_c, y_c, z_c, w_c) = M\,(x, y, z, 1)` with :math:`w_c = -z`, then
@@ -141,7 +191,6 @@ class PerspectiveDivide(DrawnExercise):
     """
 
     title = "A point through the perspective matrix"
-    answer_form = "point"
     projective_point = True
     what = "the point in CSS"
 
@@ -158,7 +207,7 @@ class PerspectiveDivide(DrawnExercise):
         x = float(rng.integers(-reach_x, reach_x + 1))
         y = float(rng.integers(-reach_y, reach_y + 1))
         self.p = np.array([x, y, -depth])
-        self.expected = tf.apply(self.M, self.p)
+        self.expected = _snap(tf.apply(self.M, self.p))
 
     def acceptable(self):
         return bool(self.p[0] or self.p[1])
@@ -177,6 +226,37 @@ class PerspectiveDivide(DrawnExercise):
                     r"(it is this division that makes depth in CSS non-linear).",
                     "depth not divided"),
         ]
+
+    def _clip(self):
+        """The clip coordinates, row by row."""
+        h = np.append(np.asarray(self.p, dtype=float), 1.0)
+        return np.array([float(row @ h) for row in self.M])
+
+    def hints(self):
+        clip = self._clip()
+        return [
+            r"Two steps: multiply, $(x_c, y_c, z_c, w_c) = M\,(x, y, z, 1)$, then divide the "
+            r"first three by $w_c$ (the homogeneous divide).",
+            rf"The last row of $M$ is $(0, 0, -1, 0)$, so $w_c = -z_e = {_num(clip[3])}$, the "
+            r"distance of the point in front of the eye.",
+            rf"Here $M\,p = {_vec(clip)}$; divide by ${_num(clip[3])}$.",
+        ]
+
+    def worked(self):
+        clip = self._clip()
+        x, y, z = self.p
+        css = clip[:3] / clip[3]
+        M = self.M
+        return Worked([
+            rf"Append $w = 1$: $p = {_vec(np.append(self.p, 1.0))}$.",
+            rf"Row by row: $x_c = {_num(M[0, 0])} \cdot {_par(x)} + {_num(M[0, 2])} \cdot "
+            rf"{_par(z)} = {_num(clip[0])}$, $y_c = {_num(M[1, 1])} \cdot {_par(y)} + "
+            rf"{_num(M[1, 2])} \cdot {_par(z)} = {_num(clip[1])}$, $z_c = {_num(M[2, 2])} "
+            rf"\cdot {_par(z)} + {_par(M[2, 3])} = {_num(clip[2])}$, $w_c = -z = "
+            rf"{_num(clip[3])}$.",
+            rf"Divide by $w_c = {_num(clip[3])}$: $p_{{CSS}} = {_vec(css)}$ (inside the cube "
+            r"$[-1, 1]^3$, as a visible point must be).",
+        ], css)
 
     def statement(self):
         return (
@@ -212,9 +292,11 @@ class CssDepth(DrawnExercise):
     what = "the depth"
 
     def draw(self, rng):
-        n, f = (float(v) for v in pick(rng, _NEAR_FAR))
+        # depths f - n of 2, 4, 5, 8, 10, 16, 20: (f+n)/(f-n) and 2fn/(f-n) are short decimals
+        n = float(pick(rng, (1, 2, 3, 4, 5)))
+        f = n + float(pick(rng, (2, 4, 5, 8, 10, 16, 20)))
         self.near, self.far = n, f
-        self.distance = float(rng.integers(int(n), int(f) + 1))
+        self.distance = float(rng.integers(int(n) + 1, int(f)))
         M = viewing.perspective(math.radians(90), 1.0, n, f)
         self.expected = float(tf.apply(M, [0.0, 0.0, -self.distance])[2])
 
@@ -235,6 +317,34 @@ class CssDepth(DrawnExercise):
             Mistake(((f + n) * D - 2 * f * n) / (f - n), r"That is $z_c$, before the homogeneous "
                     r"divide: divide it by $w_c = -z_e = D$.", "no divide"),
         ]
+
+    def hints(self):
+        n, f, D = self.near, self.far, self.distance
+        a, b = (f + n) / (f - n), 2 * f * n / (f - n)
+        return [
+            r"The depth row of the perspective matrix is $(0, 0, -\frac{f+n}{f-n}, "
+            r"-\frac{2fn}{f-n})$ and its last row $(0, 0, -1, 0)$: compute $z_c$ and $w_c$ for "
+            r"$z_e = -D$, then divide.",
+            rf"Here $\frac{{f+n}}{{f-n}} = {_num(a)}$ and $\frac{{2fn}}{{f-n}} = {_num(b)}$, so "
+            rf"$z_c = {_num(a)}\,D - {_num(b)}$ and $w_c = D = {_num(D)}$.",
+            rf"$z_c = {_num(a * D - b)}$; divide by $w_c = {_num(D)}$ (the result is not linear "
+            r"in $D$: the far half of the frustum is squeezed near $+1$).",
+        ]
+
+    def worked(self):
+        n, f, D = self.near, self.far, self.distance
+        a, b = (f + n) / (f - n), 2 * f * n / (f - n)
+        z_clip = -a * (-D) - b
+        z_css = z_clip / D
+        return Worked([
+            rf"$z_e = -D = {_num(-D)}$; the depth row gives $z_c = -\frac{{f+n}}{{f-n}}\,z_e - "
+            rf"\frac{{2fn}}{{f-n}}$ with $\frac{{f+n}}{{f-n}} = \frac{{{_num(f + n)}}}"
+            rf"{{{_num(f - n)}}} = {_num(a)}$ and $\frac{{2fn}}{{f-n}} = "
+            rf"\frac{{{_num(2 * f * n)}}}{{{_num(f - n)}}} = {_num(b)}$.",
+            rf"$z_c = {_num(a)} \cdot {_num(D)} - {_num(b)} = {_num(z_clip)}$ and "
+            rf"$w_c = -z_e = {_num(D)}$.",
+            rf"$z_{{CSS}} = z_c / w_c = {_num(z_clip)} / {_num(D)} = {_num(z_css, 4)}$.",
+        ], z_css)
 
     def statement(self):
         return (
@@ -287,6 +397,8 @@ class OrthographicMatrix(DrawnExercise):
         flipped[:3, 3] *= -1
         unscaled = self.expected.copy()
         unscaled[:3, 3] = [-(r + l) / 2, -(t + b) / 2, (f + n) / 2]
+        swapped = self.expected.copy()                 # n and f exchanged in the depth row
+        swapped[2, 2:] = [2 / (f - n), (f + n) / (f - n)]
         return [
             Mistake(positive, r"The depth row has the wrong sign of $\frac{2}{f-n}$. The "
                     r"textbook's row $\frac{2}{f-n}$ is written for signed planes "
@@ -301,7 +413,38 @@ class OrthographicMatrix(DrawnExercise):
                     r"that translation: the matrix is $S\,T(-c)$, so the last column is the "
                     r"centre times the scale factors, e.g. $-\frac{r+l}{2} \cdot \frac{2}{r-l} "
                     r"= -\frac{r+l}{r-l}$.", "translation not scaled"),
+            Mistake(swapped,
+                    _swapped_text(n, f), "near and far swapped"),
         ]
+
+    def hints(self):
+        l, r, b, t, n, f = self.left, self.right, self.bottom, self.top, self.near, self.far
+        return [
+            r"Scale and translate each axis on its own so that the box becomes $[-1, 1]^3$: "
+            r"$x_e = l \to -1$, $x_e = r \to +1$, and likewise for $y_e$; in depth "
+            r"$z_e = -n \to -1$ and $z_e = -f \to +1$.",
+            rf"For $x$: the factor is $\frac{{2}}{{r-l}} = {_num(2 / (r - l))}$ and the shift "
+            rf"$-\frac{{r+l}}{{r-l}} = {_num(-(r + l) / (r - l))}$; for $y$: "
+            rf"${_num(2 / (t - b))}$ and ${_num(-(t + b) / (t - b))}$.",
+            rf"Depth runs the other way (the box is at negative $z_e$): the factor is "
+            rf"$-\frac{{2}}{{f-n}} = {_num(-2 / (f - n))}$ and the shift "
+            rf"$-\frac{{f+n}}{{f-n}} = {_num(-(f + n) / (f - n))}$.",
+        ]
+
+    def worked(self):
+        l, r, b, t, n, f = self.left, self.right, self.bottom, self.top, self.near, self.far
+        M = np.diag([2 / (r - l), 2 / (t - b), -2 / (f - n), 1.0])
+        M[:3, 3] = [-(r + l) / (r - l), -(t + b) / (t - b), -(f + n) / (f - n)]
+        return Worked([
+            rf"$x$: $\frac{{2}}{{r-l}} = \frac{{2}}{{{_num(r - l)}}} = {_num(M[0, 0])}$, "
+            rf"shift $-\frac{{r+l}}{{r-l}} = {_num(M[0, 3])}$ (then $l \to -1$, $r \to 1$).",
+            rf"$y$: $\frac{{2}}{{t-b}} = \frac{{2}}{{{_num(t - b)}}} = {_num(M[1, 1])}$, shift "
+            rf"$-\frac{{t+b}}{{t-b}} = {_num(M[1, 3])}$.",
+            rf"Depth: the box spans $z_e$ from ${_num(-f)}$ to ${_num(-n)}$; "
+            rf"$-\frac{{2}}{{f-n}} = {_num(M[2, 2])}$ and $-\frac{{f+n}}{{f-n}} = "
+            rf"{_num(M[2, 3])}$ send $z_e = -n$ to $-1$ and $z_e = -f$ to $+1$.",
+            rf"$M = {_mat(M)}$.",
+        ], M)
 
     def statement(self):
         return (

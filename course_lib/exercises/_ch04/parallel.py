@@ -9,8 +9,8 @@ import numpy as np
 
 from ... import transforms as tf
 from ... import viewing
-from ..core import DrawnExercise, Mistake, data_note, pick, small_ints
-from . import _POINT_3, _deg, _vec
+from ..core import DrawnExercise, Mistake, Worked, data_note, pick, small_ints
+from . import _POINT_3, PointAnswer, _deg, _num, _par, _snap, _vec
 
 __all__ = [
     "CavalierCabinet",
@@ -18,7 +18,7 @@ __all__ = [
 ]
 
 
-class ObliqueProjection(DrawnExercise):
+class ObliqueProjection(PointAnswer, DrawnExercise):
     r"""Project a point along a direction of projection onto the plane :math:`z = 0`.
 
     :math:`p' = p - \frac{z}{DOP_z} DOP`, the textbook's :math:`P_{OBLI}`.
@@ -35,7 +35,6 @@ class ObliqueProjection(DrawnExercise):
     """
 
     title = "Oblique projection of a point"
-    answer_form = "point"
     what = "the projected point"
 
     def draw(self, rng):
@@ -50,11 +49,13 @@ class ObliqueProjection(DrawnExercise):
     def mistakes(self):
         x, y, z = self.p
         dx, dy, dz = self.dop
+        reversed_shift = (r"The shift goes the wrong way: you moved the point by "
+                          r"$+\frac{z}{DOP_z} DOP$. It slides along $DOP$ until its $z$ is 0: "
+                          r"$z + t\,DOP_z = 0$ gives $t = -\frac{z}{DOP_z}$, so "
+                          r"$p' = p - \frac{z}{DOP_z} DOP$ (check that your image has $z = 0$).")
         found = [
-            Mistake([x + z * dx / dz, y + z * dy / dz, 0], r"The shift goes the wrong way. The "
-                    r"point slides along the direction of projection until $z = 0$: "
-                    r"$p - \frac{z}{DOP_z} DOP$; check that your image has $z = 0$ *and* lies "
-                    r"on the line through $p$ with direction $DOP$.", "sign"),
+            Mistake([x + z * dx / dz, y + z * dy / dz, 0], reversed_shift, "shift reversed"),
+            Mistake([x + z * dx / dz, y + z * dy / dz, 2 * z], reversed_shift, "shift reversed"),
             Mistake([x, y, 0], r"That is the orthographic projection (straight down the z "
                     r"axis). Here the projectors are parallel to $DOP$, which is not "
                     r"perpendicular to the plane: $x' = x - z\,\frac{DOP_x}{DOP_z}$, "
@@ -77,8 +78,35 @@ class ObliqueProjection(DrawnExercise):
             rf"projection). Where does the point $p = {_vec(self.p)}$ land?" "\n\n"
             + _POINT_3 + "\n\n" + data_note("dop", "p"))
 
+    def hints(self):
+        x, y, z = self.p
+        dx, dy, dz = self.dop
+        t = -z / dz
+        return [
+            r"Every point slides along the direction of projection until it reaches the plane: "
+            r"$p' = p + t\,DOP$, with $t$ chosen so that the $z$ coordinate becomes 0.",
+            rf"$z + t\,DOP_z = 0$: here ${_num(z)} + t \cdot {_par(dz)} = 0$, so "
+            rf"$t = {_num(t)}$.",
+            rf"$t\,DOP = {_vec(t * self.dop)}$; add it to $p = {_vec(self.p)}$ (the $z$ "
+            r"coordinate must come out 0).",
+        ]
 
-class CavalierCabinet(DrawnExercise):
+    def worked(self):
+        x, y, z = self.p
+        dx, dy, dz = self.dop
+        t = -z / dz
+        image = np.array([x + t * dx, y + t * dy, z + t * dz])
+        return Worked([
+            rf"The projector through $p$ is $p + t\,DOP$; it meets $z = 0$ where "
+            rf"${_num(z)} + t \cdot {_par(dz)} = 0$, i.e. $t = -z/DOP_z = {_num(t)}$.",
+            rf"$p' = {_vec(self.p)} + {_par(t)} \cdot {_vec(self.dop)} = {_vec(image)}$.",
+            rf"The same with $P_{{OBLI}}$: $x' = x - z\,\frac{{DOP_x}}{{DOP_z}} = "
+            rf"{_num(image[0])}$, $y' = y - z\,\frac{{DOP_y}}{{DOP_z}} = {_num(image[1])}$, "
+            r"$z' = 0$.",
+        ], image)
+
+
+class CavalierCabinet(PointAnswer, DrawnExercise):
     r"""A point in a cavalier or cabinet drawing.
 
     The unit vector along +z is drawn at the angle :math:`\alpha` to the x axis with length
@@ -101,7 +129,6 @@ class CavalierCabinet(DrawnExercise):
     """
 
     title = "Cavalier and cabinet projections"
-    answer_form = "point"
     what = "the projected point"
 
     def draw(self, rng):
@@ -114,7 +141,7 @@ class CavalierCabinet(DrawnExercise):
         self.p = np.array([x, y, z])
         L, a = self.length, self.alpha
         self.dop = np.array([-L * math.cos(a), -L * math.sin(a), 1.0])
-        self.expected = tf.apply(viewing.oblique(self.dop), self.p)
+        self.expected = _snap(tf.apply(viewing.oblique(self.dop), self.p))
 
     def _image(self, length, angle, sign=1.0):
         x, y, z = self.p
@@ -157,3 +184,36 @@ class CavalierCabinet(DrawnExercise):
             rf"$p = {_vec(self.p)}$ land?" "\n\n" + _POINT_3 + "\n\n"
             + data_note("kind", "alpha_deg", "alpha", "length", "p")
             + " (`.alpha` is in radians.)")
+
+    def _shift(self):
+        a = math.radians(self.alpha_deg)
+        c, s = math.cos(a), math.sin(a)
+        z = self.p[2]
+        return c, s, np.array([self.length * z * c, self.length * z * s])
+
+    def hints(self):
+        c, s, shift = self._shift()
+        return [
+            r"In an oblique drawing $x$ and $y$ stay, and depth shows as a shift: a point at "
+            r"depth $z$ moves by $L\,z\,(\cos\alpha, \sin\alpha)$, the drawn image of $z$ "
+            r"units along $+z$.",
+            rf"A {self.kind} projection draws depth at $L = {_num(self.length)}$; here "
+            rf"$\alpha = {_deg(self.alpha_deg)}$, $\cos\alpha = {_num(c)}$, "
+            rf"$\sin\alpha = {_num(s)}$, and $z = {_num(self.p[2])}$.",
+            rf"The shift is $L\,z\,(\cos\alpha, \sin\alpha) = {_vec(shift)}$; add it to "
+            rf"$(x, y) = ({_num(self.p[0])}, {_num(self.p[1])})$ and set $z' = 0$.",
+        ]
+
+    def worked(self):
+        c, s, shift = self._shift()
+        image = np.array([self.p[0] + shift[0], self.p[1] + shift[1], 0.0])
+        return Worked([
+            rf"{self.kind.capitalize()}: $L = {_num(self.length)}$; $\alpha = "
+            rf"{_deg(self.alpha_deg)}$ gives $(\cos\alpha, \sin\alpha) = ({_num(c)}, "
+            rf"{_num(s)})$.",
+            rf"Depth $z = {_num(self.p[2])}$ is drawn as the shift $L\,z\,(\cos\alpha, "
+            rf"\sin\alpha) = {_num(self.length * self.p[2])} \cdot ({_num(c)}, {_num(s)}) = "
+            rf"{_vec(shift)}$.",
+            rf"$p' = ({_num(self.p[0])} + {_par(shift[0])},\ {_num(self.p[1])} + "
+            rf"{_par(shift[1])},\ 0) = {_vec(image)}$.",
+        ], image)

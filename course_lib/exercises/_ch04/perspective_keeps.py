@@ -7,9 +7,9 @@ import numpy as np
 
 from ... import transforms as tf
 from ... import viewing
-from ..core import (APART, DECIMALS, SAME, DrawnExercise, Mistake, data_note, diagnose_parts, pick,
-                    small_ints)
-from . import _num, _vec
+from ..core import (APART, DECIMALS, SAME, DrawnExercise, Mistake, Worked, data_note,
+                    diagnose_parts, pick, small_ints)
+from . import PointAnswer, _num, _par, _snap, _vec
 
 __all__ = [
     "CrossRatioUnderProjection",
@@ -44,11 +44,13 @@ class CrossRatioUnderProjection(DrawnExercise):
     answer_form = "custom"
 
     def draw(self, rng):
+        # the ratio after the projection depends on the steps and on how fast the depth grows
+        # (start z against u_z), the cross ratio on the steps only
         self.d = float(pick(rng, (1, 2, 4)))
-        start = np.array([*rng.integers(-2, 3, size=2), pick(rng, (1, 2))], dtype=float)
+        start = np.array([*rng.integers(-2, 3, size=2), pick(rng, (1, 2, 3))], dtype=float)
         ux, uy = small_ints(rng, 2, -2, 2)
-        u = np.array([ux, uy, float(pick(rng, (1, 2)))])
-        steps = np.sort(rng.choice(6, size=4, replace=False)).astype(float)
+        u = np.array([ux, uy, float(pick(rng, (1, 2, 3)))])
+        steps = np.sort(rng.choice(7, size=4, replace=False)).astype(float)
         self.A, self.B, self.C, self.D = (start + s * u for s in steps)
         images = [tf.apply(viewing.simple_perspective(self.d), p) for p in self._points()]
         self._usable = min(np.linalg.norm(q - p) for p, q in zip(images, images[1:])) > 0.1
@@ -106,6 +108,53 @@ class CrossRatioUnderProjection(DrawnExercise):
                               r"Project each point, $(x, y, z) \to (xd/z,\ yd/z,\ d)$, then "
                               r"measure the distances between the images.")
 
+    def _by_hand(self):
+        """The images and the four numbers, worked out as on paper."""
+        points = self._points()
+        images = [self.d * np.asarray(p) / p[2] for p in points]
+
+        def dist(p, q):
+            return float(np.linalg.norm(np.asarray(q) - np.asarray(p)))
+
+        def cross(a, b, c, e):
+            return dist(a, c) * dist(b, e) / (dist(b, c) * dist(a, e))
+
+        a, b, c, e = points
+        ia, ib, ic, ie = images
+        values = np.array([dist(a, b) / dist(b, c), dist(ia, ib) / dist(ib, ic),
+                           cross(a, b, c, e), cross(ia, ib, ic, ie)])
+        return images, values, dist
+
+    def hints(self):
+        images, values, dist = self._by_hand()
+        return [
+            r"Project each point with $P_{PER}$ and the divide, $(x, y, z) \to "
+            r"(xd/z,\ yd/z,\ d)$, then measure ordinary distances before and after.",
+            rf"The images are $A' = {_vec(images[0])}$, $B' = {_vec(images[1])}$, "
+            rf"$C' = {_vec(images[2])}$, $D' = {_vec(images[3])}$.",
+            rf"Before: $AB/BC = {_num(values[0])}$; after, $A'B' = "
+            rf"{_num(dist(images[0], images[1]))}$ and $B'C' = {_num(dist(images[1], images[2]))}$"
+            r". The cross ratio uses four distances: $AC, BD, BC, AD$.",
+        ]
+
+    def worked(self):
+        images, values, dist = self._by_hand()
+        A, B, C, D = self._points()
+        iA, iB, iC, iD = images
+        return Worked([
+            rf"Images ($\times d / z$): $A' = {_vec(iA)}$, $B' = {_vec(iB)}$, "
+            rf"$C' = {_vec(iC)}$, $D' = {_vec(iD)}$.",
+            rf"$AB/BC = {_num(dist(A, B))} / {_num(dist(B, C))} = {_num(values[0])}$; "
+            rf"$A'B'/B'C' = {_num(dist(iA, iB))} / {_num(dist(iB, iC))} = {_num(values[1])}$: "
+            r"the ratio changes.",
+            rf"$(A, B; C, D) = \frac{{AC \cdot BD}}{{BC \cdot AD}} = \frac{{{_num(dist(A, C))} "
+            rf"\cdot {_num(dist(B, D))}}}{{{_num(dist(B, C))} \cdot {_num(dist(A, D))}}} = "
+            rf"{_num(values[2])}$.",
+            rf"$(A', B'; C', D') = \frac{{{_num(dist(iA, iC))} \cdot {_num(dist(iB, iD))}}}"
+            rf"{{{_num(dist(iB, iC))} \cdot {_num(dist(iA, iD))}}} = {_num(values[3])}$: the "
+            r"cross ratio survives.",
+        ], list(values))
+
     def statement(self):
         return (
             rf"The points $A = {_vec(self.A)}$, $B = {_vec(self.B)}$, $C = {_vec(self.C)}$ and "
@@ -121,7 +170,7 @@ class CrossRatioUnderProjection(DrawnExercise):
             + data_note("d", "A", "B", "C", "D"))
 
 
-class VanishingPoint(DrawnExercise):
+class VanishingPoint(PointAnswer, DrawnExercise):
     r"""The vanishing point of a family of parallel lines under :math:`P_{PER}`.
 
     The image of :math:`p_0 + s\,u` tends to :math:`d\,(u_x / u_z,\ u_y / u_z,\ 1)` as
@@ -141,7 +190,6 @@ class VanishingPoint(DrawnExercise):
     """
 
     title = "A vanishing point"
-    answer_form = "point"
     projective_point = True
     what = "the vanishing point"
 
@@ -152,7 +200,7 @@ class VanishingPoint(DrawnExercise):
         self.p0 = np.array([*rng.integers(-3, 4, size=2), pick(rng, (1, 2, 3, 4))],
                            dtype=float)
         homogeneous = viewing.simple_perspective(self.d) @ np.append(self.u, 0.0)
-        self.expected = homogeneous[:3] / homogeneous[3]
+        self.expected = _snap(homogeneous[:3] / homogeneous[3])
 
     def mistakes(self):
         ux, uy, uz = self.u
@@ -186,3 +234,28 @@ class VanishingPoint(DrawnExercise):
             r"the vanishing point. Where is it?" "\n\n"
             r"**Answer:** the vanishing point as a list of 3 numbers `[x, y, z]` (a point of "
             r"the plane $z = d$). " + DECIMALS + "\n\n" + data_note("d", "u", "p0"))
+
+    def hints(self):
+        ux, uy, uz = self.u
+        return [
+            r"Far along a line $p_0 + s\,u$ the image stops depending on $p_0$: it tends to the "
+            r"image of the direction, the point at infinity $(u_x, u_y, u_z, 0)$.",
+            rf"$P_{{PER}}\,(u, 0) = (d\,u_x,\ d\,u_y,\ d\,u_z,\ u_z) = "
+            rf"{_vec(self.d * np.append(self.u, 0.0) + np.array([0, 0, 0, uz]))}$: it still "
+            r"needs the homogeneous divide by $w = u_z$.",
+            rf"Divide by $u_z = {_num(uz)}$: $x = d\,u_x/u_z = {_num(self.d)} \cdot "
+            rf"{_par(ux)} / {_par(uz)}$, and likewise $y$; $z = d$.",
+        ]
+
+    def worked(self):
+        ux, uy, uz = self.u
+        d = self.d
+        image = np.array([d * ux, d * uy, d * uz, uz])
+        point = image[:3] / image[3]
+        return Worked([
+            rf"The common direction as the point at infinity: $(u, 0) = "
+            rf"{_vec(np.append(self.u, 0.0))}$ (the point $p_0$ does not matter).",
+            rf"$P_{{PER}}\,(u, 0) = (d\,u_x, d\,u_y, d\,u_z, u_z) = {_vec(image)}$.",
+            rf"Divide by $w = u_z = {_num(uz)}$: the vanishing point is ${_vec(point)}$, on the "
+            rf"plane $z = d = {_num(d)}$.",
+        ], point)

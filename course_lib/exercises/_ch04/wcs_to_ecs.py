@@ -9,8 +9,8 @@ import numpy as np
 
 from ... import transforms as tf
 from ... import viewing
-from ..core import DECIMALS, DrawnExercise, Mistake, data_note, pick, small_ints
-from . import _MATRIX_4, _POINT_3, _signs, _vec
+from ..core import DECIMALS, DrawnExercise, Mistake, Worked, data_note, pick, small_ints
+from . import _MATRIX_4, _POINT_3, PointAnswer, _mat, _num, _signs, _snap, _vec
 
 __all__ = [
     "EyeCoordinateAxes",
@@ -76,6 +76,41 @@ def _camera_words(eye, gaze, up):
             rf"$up = {_vec(up)}$, which is not perpendicular to $g$.")
 
 
+class _Axes:
+    """The ECS axes of a camera worked out by hand, with the numbers a student writes down."""
+
+    def __init__(self, gaze, up):
+        self.gaze_length = float(np.linalg.norm(gaze))
+        self.z = -np.asarray(gaze, dtype=float) / self.gaze_length
+        self.up_cross_z = np.cross(up, self.z)
+        self.cross_length = float(np.linalg.norm(self.up_cross_z))
+        self.x = self.up_cross_z / self.cross_length
+        self.y = np.cross(self.z, self.x)
+        self.rows = np.array([self.x, self.y, self.z])
+
+    def steps(self, gaze, up):
+        return [
+            rf"$\lVert g \rVert = {_num(self.gaze_length)}$, so "
+            rf"$z_e = -g / \lVert g \rVert = {_vec(self.z)}$ (it points back at the viewer).",
+            rf"$up \times z_e = {_vec(up)} \times {_vec(self.z)} = {_vec(self.up_cross_z)}$, of "
+            rf"length ${_num(self.cross_length)}$: $x_e = {_vec(self.x)}$.",
+            rf"$y_e = z_e \times x_e = {_vec(self.y)}$ (already of unit length, and "
+            r"perpendicular to the gaze although $up$ is not).",
+        ]
+
+    def hints(self, gaze, up):
+        return [
+            r"Build the axes in this order: $z_e = -g / \lVert g \rVert$ (backwards, towards the "
+            r"viewer), $x_e = up \times z_e$ normalized (to the right), and "
+            r"$y_e = z_e \times x_e$ (the direction of the part of $up$ across the gaze).",
+            rf"Here $\lVert g \rVert = {_num(self.gaze_length)}$, so $z_e = {_vec(self.z)}$; and "
+            rf"$up \times z_e = {_vec(self.up_cross_z)}$, of length "
+            rf"${_num(self.cross_length)}$.",
+            rf"So $x_e = {_vec(self.x)}$; the last axis is the cross product "
+            r"$z_e \times x_e$ (no need to normalize it).",
+        ]
+
+
 _ECS_CONVENTION = (r"The eye coordinate system has $x_e$ to the right, $y_e$ up and $z_e$ "
                    r"pointing **towards the viewer** (the camera looks down $-z_e$): "
                    r"$z_e = -\frac{g}{\lVert g \rVert}$, "
@@ -110,7 +145,7 @@ class EyeCoordinateAxes(DrawnExercise):
 
     def draw(self, rng):
         self.eye, self.gaze, self.up = _camera(rng)
-        self.expected = viewing.look_at(self.eye, self.gaze, self.up)[:3, :3]
+        self.expected = _snap(viewing.look_at(self.eye, self.gaze, self.up)[:3, :3])
 
     def mistakes(self):
         x, y, z = self.expected
@@ -135,6 +170,14 @@ class EyeCoordinateAxes(DrawnExercise):
                     r"question asks for them as its rows, $[x_e;\ y_e;\ z_e]$ (which is the "
                     r"rotation part of $M_{WCS \to ECS}$).", "transposed"),
         ]
+
+    def hints(self):
+        return _Axes(self.gaze, self.up).hints(self.gaze, self.up)
+
+    def worked(self):
+        axes = _Axes(self.gaze, self.up)
+        return Worked(axes.steps(self.gaze, self.up) + [
+            rf"The matrix with the axes as rows: ${_mat(axes.rows)}$."], axes.rows)
 
     def statement(self):
         return (
@@ -169,7 +212,7 @@ class LookAtMatrix(DrawnExercise):
 
     def draw(self, rng):
         self.eye, self.gaze, self.up = _camera(rng)
-        self.expected = viewing.look_at(self.eye, self.gaze, self.up)
+        self.expected = _snap(viewing.look_at(self.eye, self.gaze, self.up))
 
     def _target_mistake(self):
         """The matrix of a student who took the gaze for the point looked at (or None)."""
@@ -210,6 +253,30 @@ class LookAtMatrix(DrawnExercise):
                                  "gaze as target"))
         return found
 
+    def hints(self):
+        axes = _Axes(self.gaze, self.up)
+        return [
+            r"First move the eye to the origin, then turn the world's axes onto the eye's: "
+            r"$M = R\,T(-E)$, where the **rows** of $R$ are $x_e$, $y_e$, $z_e$.",
+            axes.hints(self.gaze, self.up)[1] + rf" Then $x_e = {_vec(axes.x)}$ and "
+            rf"$y_e = z_e \times x_e = {_vec(axes.y)}$.",
+            r"The last column is $-R\,E = (-x_e \cdot E,\ -y_e \cdot E,\ -z_e \cdot E)$; "
+            rf"here $x_e \cdot E = {_num(axes.x @ self.eye)}$.",
+        ]
+
+    def worked(self):
+        axes = _Axes(self.gaze, self.up)
+        column = -(axes.rows @ self.eye)
+        M = np.eye(4)
+        M[:3, :3] = axes.rows
+        M[:3, 3] = column
+        return Worked(axes.steps(self.gaze, self.up) + [
+            rf"$M = R\,T(-E)$: the rows of $R$ are the axes, and the last column is "
+            rf"$-R\,E = (-x_e \cdot E,\ -y_e \cdot E,\ -z_e \cdot E) = {_vec(column)}$ with "
+            rf"$E = {_vec(self.eye)}$.",
+            rf"$M = {_mat(M)}$. Check: $M$ sends the eye $E$ to the origin.",
+        ], M)
+
     def statement(self):
         return (
             _camera_words(self.eye, self.gaze, self.up) + " " + _ECS_CONVENTION + "\n\n"
@@ -218,7 +285,7 @@ class LookAtMatrix(DrawnExercise):
             + data_note("eye", "gaze", "up"))
 
 
-class PointToEyeCoordinates(DrawnExercise):
+class PointToEyeCoordinates(PointAnswer, DrawnExercise):
     r"""The eye coordinates of a world point: :math:`(x_e, y_e, z_e) \cdot (p - E)`.
 
     Attributes: ``eye``, ``gaze``, ``up``, ``p``.
@@ -234,7 +301,6 @@ class PointToEyeCoordinates(DrawnExercise):
     """
 
     title = "A world point in eye coordinates"
-    answer_form = "point"
     what = "the point in eye coordinates"
 
     def draw(self, rng):
@@ -242,7 +308,7 @@ class PointToEyeCoordinates(DrawnExercise):
         self.p = small_ints(rng, 3)
         M = viewing.look_at(self.eye, self.gaze, self.up)
         self.expected_axes = M[:3, :3]
-        self.expected = tf.apply(M, self.p)
+        self.expected = _snap(tf.apply(M, self.p))
 
     def mistakes(self):
         R, E, p = self.expected_axes, self.eye, self.p
@@ -262,6 +328,31 @@ class PointToEyeCoordinates(DrawnExercise):
                     r"coordinates of $p - E$ along the axes are the dot products with "
                     r"$x_e, y_e, z_e$, so the axes are the **rows**.", "axes in columns"),
         ]
+
+    def hints(self):
+        axes = _Axes(self.gaze, self.up)
+        v = self.p - self.eye
+        return [
+            r"Eye coordinates are measured from the eye along the eye's axes: "
+            r"$p_{ECS} = (x_e \cdot (p - E),\ y_e \cdot (p - E),\ z_e \cdot (p - E))$.",
+            axes.hints(self.gaze, self.up)[1] + rf" Then $x_e = {_vec(axes.x)}$ and "
+            rf"$y_e = z_e \times x_e = {_vec(axes.y)}$.",
+            rf"$p - E = {_vec(v)}$: take its dot product with each axis (a point in front of "
+            r"the camera gets a negative $z_e$ coordinate).",
+        ]
+
+    def worked(self):
+        axes = _Axes(self.gaze, self.up)
+        v = self.p - self.eye
+        coords = np.array([axes.x @ v, axes.y @ v, axes.z @ v])
+        return Worked(axes.steps(self.gaze, self.up) + [
+            rf"Move the eye to the origin: $p - E = {_vec(self.p)} - {_vec(self.eye)} = "
+            rf"{_vec(v)}$.",
+            rf"Its coordinates along the axes: $x_e \cdot (p - E) = {_num(coords[0])}$, "
+            rf"$y_e \cdot (p - E) = {_num(coords[1])}$, $z_e \cdot (p - E) = "
+            rf"{_num(coords[2])}$.",
+            rf"$p_{{ECS}} = {_vec(coords)}$.",
+        ], coords)
 
     def statement(self):
         return (
