@@ -603,6 +603,13 @@ def _whole_vector(value, expected, mistakes, what):
     value = np.round(value)
     diff = value - expected
     off = [int(i) for i in np.flatnonzero(diff)]
+    if value.size == 1:
+        if abs(float(diff[0])) == 1:
+            return Feedback("wrong", f"{_cap(what)} is off by one: count again, and check "
+                            "whether the first and last ones are included (and whether counting "
+                            "starts at 0 or 1).", "off by one")
+        return Feedback("wrong", f"{_cap(what)} should be different: yours is "
+                        f"{int(value[0])}.", "value differs")
     if np.all(np.abs(diff[diff != 0]) == 1):
         return Feedback("wrong", f"Off by one in components {off} (counted from 0) of {what}: "
                         "count again, and check whether the first and last ones are included "
