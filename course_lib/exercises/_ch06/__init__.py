@@ -77,6 +77,11 @@ def _one_whole(feedback, what, off_by_one):
     return feedback
 
 
+def _paren(x):
+    """A whole number as text, in parentheses when negative (to follow a minus sign)."""
+    return f"({x})" if x < 0 else str(x)
+
+
 def _cycle(face):
     """The directed edges of a face, in its order: [(v0, v1), (v1, v2), ..., (vk, v0)]."""
     return list(zip(face, face[1:] + face[:1]))

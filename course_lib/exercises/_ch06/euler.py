@@ -6,7 +6,7 @@ Part of :mod:`course_lib.exercises.ch06`, which imports every exercise from here
 import numpy as np
 
 from ..core import DrawnExercise, Mistake, Worked, data_note, pick
-from . import _one_whole, _Parts
+from . import _one_whole, _paren, _Parts
 
 __all__ = [
     "EdgeCollapseCounts",
@@ -110,7 +110,7 @@ class EulerCounts(_Parts):
             rf"edge is counted twice (it lies on 2 faces), so ${k}F = 2E$ and "
             rf"$E = \tfrac{{{k}}}{{2}}F$.",
             rf"Substitute into $V - E + F = \chi$: $V - (\tfrac{{{k}}}{{2}} - 1)F = \chi$, so "
-            rf"$F = \dfrac{{V - \chi}}{{{k}/2 - 1}} = \dfrac{{{V} - ({chi})}}{{{k}/2 - 1}} = "
+            rf"$F = \dfrac{{V - \chi}}{{{k}/2 - 1}} = \dfrac{{{V} - {_paren(chi)}}}{{{k}/2 - 1}} = "
             rf"\dfrac{{{rest}}}{{{k}/2 - 1}} = {F}$.",
             rf"Then $E = \tfrac{{{k}}}{{2}} \cdot {F} = {E}$. Check: "
             rf"${V} - {E} + {F} = {V - E + F} = \chi$.",
@@ -210,7 +210,7 @@ class GenusFromCounts(DrawnExercise):
             rf"For a connected orientable surface with $g$ handles and $b$ boundary loops, "
             rf"$\chi = 2 - 2g - b$; here $b = {b}$"
             + (" (the mesh is closed)." if b == 0 else "."),
-            rf"So $2g = 2 - b - \chi = 2 - {b} - ({chi}) = {twice}$ and $g = {g}$.",
+            rf"So $2g = 2 - b - \chi = 2 - {b} - {_paren(chi)} = {twice}$ and $g = {g}$.",
         ], g)
 
     def statement(self):
