@@ -8,6 +8,7 @@ garbage is "invalid", and every anticipated mistake, rebuilt here from the quest
 attributes, is named by its diagnosis.
 """
 import math
+from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -355,6 +356,7 @@ def zbuffer_ids(ex):
         "depth test reversed": rasterize(ex.triangles, "farthest")[0],
         "rows upside down": ids[::-1],
         "transposed": ids.T,
+        "numbered from 1": [[v + 1 if v >= 0 else -1 for v in row] for row in ids],
     }
 
 
@@ -369,11 +371,13 @@ def zbuffer_writes(ex):
 
 def painters_order(ex):
     depths = [np.asarray(d, float) for d in ex.depths]
-    order = sorted(range(4), key=lambda k: depths[k].min())
+    n = len(depths)
+    order = sorted(range(n), key=lambda k: depths[k].min())
     return order, {
         "nearest first": order[::-1],
-        "sorted by nearest vertex": sorted(range(4), key=lambda k: depths[k].max()),
-        "sorted by average depth": sorted(range(4), key=lambda k: depths[k].mean()),
+        "sorted by nearest vertex": sorted(range(n), key=lambda k: depths[k].max()),
+        "sorted by average depth": sorted(range(n), key=lambda k: depths[k].mean()),
+        "counted from 1": [k + 1 for k in order],
     }
 
 
@@ -417,16 +421,16 @@ def ray_counts(ex):
 # Specs
 # ---------------------------------------------------------------------------------------------
 
-SET_GARBAGE = ["all", {"a": 1}, [0.5], [99], [-1], ["a"], 3.5]
+SET_GARBAGE = ["all", {"a": 1}, [0.5], ["a"], 3.5, [True, 2]]
 CODES_GARBAGE = ["1001", {"a": 1}, [1, 2], ["2", "0", "0", "0", "0"], [1.5] * 5,
-                 ["1111111"] * 5, [999] * 5]
+                 ["1111111"] * 5, [True] * 5, [5.5, 0, 0, 0, 0], ["x1", "0", "0", "0", "0"]]
 WORDS_GARBAGE = ["accept", {"a": 1}, ["accept"], ["yes"] * 5, [1, 2, 3, 4, 5]]
 SEGMENT_GARBAGE = ["maybe", {"a": 1}, [1, 2], [[1, 2, 3]], [[math.nan] * 4] * 2, [[1, 2]] * 3]
 TABLE_GARBAGE = ["t", {"a": 1}, np.eye(4), [1, 2, 3], [[math.nan] * 3] * 4]
 NUMBERS_GARBAGE = ["t", {"a": 1}, [1], [[1, 2], [3, 4]], [math.nan] * 5, 1.0]
 POLYGON_GARBAGE = ["poly", {"a": 1}, [1, 2, 3], [[1, 2, 3]], [[math.inf, 0]]]
 GRID_GARBAGE = ["ids", {"a": 1}, np.zeros((3, 4)), np.full((4, 4), 0.5), [1, 2]]
-ORDER_GARBAGE = ["0123", {"a": 1}, [0, 1, 2], [0, 0, 1, 2], [0, 1, 2, 7]]
+ORDER_GARBAGE = ["0123", {"a": 1}, [0, 1, 2], [0.5, 1, 2, 3, 4], [True] * 4]
 NUMBER_GARBAGE = ["v", {"v": 1}, [1, 2], [[1], [2, 3]], math.nan]
 
 # class name: (independent answer and mistakes, answer form)
@@ -598,3 +602,199 @@ def test_numbers_are_nice_for_hand_work():
             assert np.allclose(tri[:, 2] * 10, np.round(tri[:, 2] * 10))
     for ex in exercises("RayCastingCount"):
         assert all(k == int(k) for k in ex.hits)
+
+
+# ---------------------------------------------------------------------------------------------
+# Whole numbers, variety, boundary cases
+# ---------------------------------------------------------------------------------------------
+
+def one_off(right):
+    """Every answer that is `right` (whole numbers) with one entry one larger or smaller."""
+    flat = [int(v) for v in np.ravel(right)]
+    for i in range(len(flat)):
+        for step in (-1, 1):
+            wrong = list(flat)
+            wrong[i] += step
+            yield np.reshape(wrong, np.shape(right)).tolist() if np.ndim(right) else wrong[0]
+
+
+#: Exercises answered in whole numbers: the answer as the solver gives it, the whole part of it
+#: (the vertex count of SutherlandHodgmanArea), and whether its parts are counts (off by one is
+#: then diagnosed as such) rather than indices, codes or ids.
+WHOLE = {
+    "RayCastingCount": (lambda r: r, True),
+    "ZBufferWrites": (lambda r: r, True),
+    "CohenSutherlandIntersections": (lambda r: r, True),
+    "ZBufferIds": (lambda r: r, False),
+    "Outcodes": (lambda r: r, False),
+    "PaintersOrder": (lambda r: r, False),
+    "BackFaceCulling": (lambda r: r, False),
+    "PainterFailure": (lambda r: r, False),
+    "SutherlandHodgmanArea": (lambda r: r[0], True),
+}
+
+
+@pytest.mark.parametrize("name", WHOLE)
+def test_whole_numbers_are_exact_and_may_be_given_as_floats(name):
+    form = SPECS[name][1]
+    whole_part, counts = WHOLE[name]
+    off_by_one = 0
+    for ex in exercises(name):
+        right, mistakes = solve(name, ex)
+        right = as_answer(form, right)
+        as_floats = np.asarray(right, dtype=float)
+        for answer in (as_floats, as_floats.tolist()):
+            assert ex.check(answer).status == "correct", (ex, answer)
+        if name == "SutherlandHodgmanArea":
+            wrongs = [[n, float(right[1])] for n in one_off(whole_part(right))]
+        elif form == "set" and not right:
+            wrongs = [[0]]
+        else:
+            wrongs = list(one_off(right))
+        for wrong in wrongs:
+            fb = ex.check(wrong)
+            assert fb.status == "wrong", (ex, wrong, fb)
+            if counts and fb.diagnosis not in mistakes:
+                assert fb.diagnosis == "off by one", (ex, wrong, fb)
+                assert "Components" not in fb.message, fb.message        # a single number
+                off_by_one += 1
+    assert not counts or off_by_one >= MIN_DIAGNOSED
+
+
+def test_outcodes_read_integral_floats_and_refuse_the_rest():
+    for ex in exercises("Outcodes"):
+        codes, _ = outcodes(ex)
+        assert ex.check([float(c) for c in codes]).status == "correct", ex
+        assert ex.check(np.array(codes, dtype=float)).status == "correct", ex
+        assert ex.check([np.float64(c) for c in codes]).status == "correct", ex
+        for bad in (5.5, True, "21", "x"):
+            fb = ex.check([bad] + [float(c) for c in codes[1:]])
+            assert fb.status == "invalid", (ex, bad, fb)
+        fb = ex.check([4 ** ex.dim] + codes[1:])
+        assert (fb.status, fb.diagnosis) == ("wrong", "not an outcode"), (ex, fb)
+
+
+def test_indices_out_of_range_or_counted_from_one_are_named():
+    for ex in exercises("PaintersOrder", range(30)):
+        order, _ = painters_order(ex)
+        n = len(order)
+        assert ex.check([k + 1 for k in order]).diagnosis == "counted from 1"
+        twice = [order[0]] + order[:-1]
+        fb = ex.check(twice)
+        assert (fb.status, fb.diagnosis) == ("wrong", "not a permutation"), (ex, fb)
+        assert ex.check(order[:-1] + [n + 2]).status == "wrong"
+    for ex in exercises("BackFaceCulling", range(30)):
+        back, _ = back_faces(ex)
+        fb = ex.check(back + [len(ex.points)])
+        assert (fb.status, fb.diagnosis) == ("wrong", "out of range"), (ex, fb)
+        fb = ex.check([i + 1 for i in back])
+        assert fb.status == "wrong" and fb.diagnosis in ("counted from 1", "compendium sign",
+                                                         "constant view direction"), (ex, fb)
+    for ex in exercises("ZBufferIds", range(30)):
+        ids, _ = zbuffer_ids(ex)
+        assert ex.check(np.where(ids >= 0, ids + 1, -1)).diagnosis == "numbered from 1"
+
+
+def answer_key(value):
+    """A hashable form of an expected answer, to count the distinct ones."""
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (set, frozenset)):
+        return tuple(sorted(value))
+    if isinstance(value, list) and value and isinstance(value[0], str):
+        return tuple(value)
+    return tuple(np.round(np.ravel(np.asarray(value, dtype=float)), 6))
+
+
+#: The fewest distinct answers among 300 seeds: 30, unless the answer has few values in itself:
+#: the number of Cohen-Sutherland intersections of one segment (1 to 4) and the number of
+#: z-buffer writes on a 4 x 4 screen (a count of at most 16 pixels per triangle, in practice
+#: from 7 to 25). Their scenes differ from seed to seed all the same.
+FEWEST_ANSWERS = {"CohenSutherlandIntersections": 4, "ZBufferWrites": 15}
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_seeds_give_many_different_answers(name):
+    cls = getattr(ch05, name)
+    answers = {answer_key(cls(seed=seed).expected) for seed in range(300)}
+    assert len(answers) >= FEWEST_ANSWERS.get(name, 30), (name, len(answers))
+
+
+def passes_through(p0, p1, lo, hi):
+    """Whether the open segment meets the box's boundary at a point on two sides at once."""
+    p0, p1 = [Fraction(float(v)) for v in p0], [Fraction(float(v)) for v in p1]
+    lo, hi = [Fraction(float(v)) for v in lo], [Fraction(float(v)) for v in hi]
+    dim = len(p0)
+    for i in range(dim):
+        for j in range(dim):
+            if i == j or p1[i] == p0[i] or p1[j] == p0[j]:
+                continue
+            for a in (lo[i], hi[i]):
+                for b in (lo[j], hi[j]):
+                    t = (a - p0[i]) / (p1[i] - p0[i])
+                    if t != (b - p0[j]) / (p1[j] - p0[j]) or not 0 < t < 1:
+                        continue
+                    point = [u + t * (w - u) for u, w in zip(p0, p1)]
+                    if all(lo[k] <= point[k] <= hi[k] for k in range(dim)):
+                        return True
+    return False
+
+
+def boundary_found(name, ex):
+    """The boundary cases of a variant, found here from its attributes."""
+    lo, hi = np.asarray(ex.box_min), np.asarray(ex.box_max)
+    if name == "Outcodes":
+        ends = [ex.points]
+    elif name == "CohenSutherlandDecision":
+        ends = [ex.segments.reshape(-1, 2)]
+    else:
+        ends = [np.array([ex.p0, ex.p1])]
+    found = []
+    if any(np.any((e == lo) | (e == hi)) for e in ends):
+        found.append("point on a side")
+    if name not in ("Outcodes", "CohenSutherlandDecision", "LiangBarskyTable") and \
+            passes_through(ex.p0, ex.p1, lo, hi):
+        found.append("through a corner" if len(lo) == 2 else "through an edge or corner")
+    if name == "LiangBarskyClip3D" and np.any(np.asarray(ex.p0) == ex.p1):
+        found.append("parallel to a side")
+    return found
+
+
+BOUNDARY = ("Outcodes", "CohenSutherlandDecision", "CohenSutherlandClip",
+            "CohenSutherlandIntersections", "LiangBarskyTable", "LiangBarskyInterval",
+            "LiangBarskyClip3D")
+
+
+@pytest.mark.parametrize("name", BOUNDARY)
+def test_boundary_cases_are_a_labelled_tenth_to_a_fifth_of_the_seeds(name):
+    cls = getattr(ch05, name)
+    labelled = 0
+    seeds = range(300)
+    for seed in seeds:
+        ex = cls(seed=seed)
+        found = boundary_found(name, ex)
+        assert found == ([] if ex.boundary is None else [ex.boundary]), (ex, found, ex.boundary)
+        said = "boundary case" in ex.worked().markdown()
+        assert said == (ex.boundary is not None), (ex, ex.boundary)
+        labelled += ex.boundary is not None
+    assert 0.10 <= labelled / len(seeds) <= 0.22, (name, labelled)
+    kinds = {cls(seed=seed).boundary for seed in range(300)} - {None}
+    assert kinds == set(cls.boundary_kinds), (name, kinds)
+
+
+def test_other_exercises_never_land_on_a_boundary_case():
+    for ex in exercises("BackFaceCulling"):                        # no face seen edge-on
+        assert all(np.dot(n, p - ex.eye) != 0 for p, n in zip(ex.points, ex.normals))
+    for ex in exercises("SutherlandHodgmanOneSide"):               # no vertex on the line
+        axis = 0 if ex.side in ("left", "right") else 1
+        assert np.all(ex.polygon[:, axis] != ex.value)
+    for name in ("ZBufferIds", "ZBufferWrites"):                   # no depth ties
+        for ex in exercises(name):
+            for j in range(4):
+                for i in range(4):
+                    depths = sorted(plane_depth(t, i + 0.5, j + 0.5) for t in ex.triangles
+                                    if covers(t, i + 0.5, j + 0.5))
+                    assert all(b - a > 1e-3 for a, b in zip(depths, depths[1:]))
+    for ex in exercises("PaintersOrder"):                          # no ties in the keys
+        keys = [min(d) for d in ex.depths]
+        assert len(set(keys)) == len(keys)

@@ -358,10 +358,10 @@ def optimal(ex):
 
 NUMBERS_GARBAGE = ["E", {"E": 1}, [1], [1, 2, 3, 4, 5], [[1], [2, 3]], [1, math.nan], 7.5]
 NUMBER_GARBAGE = ["g", {"g": 1}, [1, 2], [[1, 2]], math.nan]
-INDEX_GARBAGE = ["f0", {"f": 1}, [1, 2], -1, 99, 1.5, math.inf]
-RECORD_GARBAGE = ["e", {"left_face": 1}, [1, 2, 3], [0.5] * 6, [99] * 6, [[1, 2], [3]],
-                  [math.nan] * 6]
-RING_GARBAGE = ["ring", {"a": 1}, [1, 2], [0.5, 1, 2, 3], [99, 1, 2, 3], [[1, 2], [3]]]
+INDEX_GARBAGE = ["f0", {"f": 1}, [1, 2], 1.5, math.inf, True]
+RECORD_GARBAGE = ["e", {"left_face": 1}, [1, 2, 3], [0.5] * 6, [[1, 2], [3]],
+                  [math.nan] * 6, [True] * 6]
+RING_GARBAGE = ["ring", {"a": 1}, [1, 2], [0.5, 1, 2, 3], [[1, 2], [3]], [True] * 4]
 NAME_GARBAGE = ["torus", 3, ["closed manifold"], {"a": 1}, "manifold", b"closed manifold"]
 MATRIX_GARBAGE = ["Q", {"Q": 1}, [[1, 2], [3]], np.ones(5), np.ones((5, 5)),
                   [[math.nan] * 4] * 4]
@@ -442,7 +442,7 @@ def test_wrong_answers_get_teaching_feedback():
             assert fb.status == "wrong" and len(fb.message) > 80, (ex, fb)
     for ex in exercises("WingedEdgeRecord", range(20)):
         right, _ = winged(ex)
-        fb = ex.check([right[0], right[1], -1, -1, -1, -1])
+        fb = ex.check([right[0], right[1]] + [ex.e] * 4)         # e is no wing of itself
         assert fb.status == "wrong" and "left_prev" in fb.message and "left_face" not in \
             fb.message.split(".")[0]
 
@@ -495,3 +495,112 @@ def test_numbers_are_nice_for_hand_work():
             # each quadric is zero at its own vertex
             assert abs(np.append(ex.v1, 1) @ ex.Q1 @ np.append(ex.v1, 1)) < 1e-12
             assert abs(np.append(ex.v2, 1) @ ex.Q2 @ np.append(ex.v2, 1)) < 1e-12
+
+
+# ---------------------------------------------------------------------------------------------
+# Whole numbers, the advice once, variety
+# ---------------------------------------------------------------------------------------------
+
+#: The exercises whose answer is made of whole numbers (counts, indices), compared exactly.
+WHOLE = ("EulerCounts", "GenusFromCounts", "EdgeCollapseCounts", "FlippedFace",
+         "WingedEdgeRecord", "HalfEdgeWalk", "OneRing")
+
+
+def one_off(right):
+    """Every answer that is `right` with one entry one larger or one smaller."""
+    entries = [int(v) for v in np.ravel(right)]
+    for i in range(len(entries)):
+        for step in (-1, 1):
+            wrong = list(entries)
+            wrong[i] += step
+            yield wrong if np.ndim(right) else wrong[0]
+
+
+@pytest.mark.parametrize("name", WHOLE)
+def test_whole_numbers_are_exact_and_may_be_given_as_floats(name):
+    solve, _ = SPECS[name]
+    counts = name in ("EulerCounts", "GenusFromCounts", "EdgeCollapseCounts")
+    off_by_one = 0
+    for ex in exercises(name):
+        right, mistakes = solve(ex)
+        as_floats = [float(v) for v in np.ravel(right)]
+        for answer in (as_floats, np.array(as_floats)) if np.ndim(right) else \
+                (float(right), np.float64(right)):
+            assert ex.check(answer).status == "correct", (ex, answer)
+        for wrong in one_off(right):
+            fb = ex.check(wrong)
+            assert fb.status == "wrong", (ex, wrong, fb)
+            if counts and fb.diagnosis not in mistakes:
+                assert fb.diagnosis == "off by one", (ex, wrong, fb)
+                off_by_one += 1
+    assert not counts or off_by_one >= harness.MIN_DIAGNOSED
+
+
+def test_index_answers_out_of_range_or_counted_from_one_are_wrong():
+    for ex in exercises("FlippedFace", range(30)):
+        for k in (-1, len(ex.faces)):
+            fb = ex.check(k)
+            assert (fb.status, fb.diagnosis) == ("wrong", "out of range"), (ex, fb)
+            assert str(len(ex.faces) - 1) in fb.message
+    for name in ("WingedEdgeRecord", "OneRing"):
+        solve, _ = SPECS[name]
+        for ex in exercises(name, range(30)):
+            right, _ = solve(ex)
+            fb = ex.check([v + 1 for v in right])
+            assert (fb.status, fb.diagnosis) == ("wrong", "counted from 1"), (ex, fb)
+            fb = ex.check([99] + list(right[1:]))
+            assert (fb.status, fb.diagnosis) == ("wrong", "out of range"), (ex, fb)
+
+
+def unexplained(ex, right, form):
+    """Wrong answers no slip explains: each entry off on its own, then all entries off."""
+    values = [int(v) if form in DISCRETE else float(v) for v in np.ravel(right)]
+    if form == "record":
+        size = len(ex.edges)
+    elif form == "ring":
+        size = ex.table.n_vertices
+    else:
+        size = None
+
+    def shifted(v):
+        return (v + 2) % size if size else v + 7.37
+
+    for i in range(len(values)):
+        yield [shifted(v) if j == i else v for j, v in enumerate(values)]
+    yield [shifted(v) for v in values]
+
+
+@pytest.mark.parametrize("name", ["EulerCounts", "EdgeCollapseCounts", "HalfEdgeWalk",
+                                  "OptimalPosition", "WingedEdgeRecord", "OneRing"])
+def test_the_advice_ends_a_wrong_verdict_at_most_once(name):
+    solve, form = SPECS[name]
+    advised = 0
+    for ex in exercises(name):
+        right, _ = solve(ex)
+        assert ex.advice
+        for wrong in unexplained(ex, right, form):
+            fb = ex.check(wrong)
+            assert fb.status == "wrong", (ex, wrong, fb)
+            assert fb.message.count(ex.advice) <= 1, (ex, wrong, fb.message)
+            advised += ex.advice in fb.message
+    assert advised >= harness.MIN_DIAGNOSED            # the advice is given, once
+
+
+def answer_key(value):
+    """A hashable form of an expected answer, to count the distinct ones."""
+    if isinstance(value, (str, tuple)):
+        return value
+    return tuple(np.round(np.ravel(np.asarray(value, dtype=float)), 6))
+
+
+#: The fewest distinct answers among 300 seeds. 30 unless the answer has few values in
+#: itself: the genus (0 to 3), one of the four kinds of mesh, the index of one face of a mesh
+#: of at most 8 faces. (Their questions still differ from seed to seed.)
+FEWEST_ANSWERS = {"GenusFromCounts": 4, "Manifoldness": 4, "FlippedFace": 8}
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_seeds_give_many_different_answers(name):
+    cls = getattr(ch06, name)
+    answers = {answer_key(cls(seed=seed).expected) for seed in range(300)}
+    assert len(answers) >= FEWEST_ANSWERS.get(name, 30), (name, len(answers))

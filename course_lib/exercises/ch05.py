@@ -15,6 +15,12 @@ Every exercise names the slips it anticipates (the compendium's sign in the back
 reversed bit order, entering and leaving swapped, a missing intersection vertex, a missing depth
 test, ...) and draws its numbers again until each slip gives an answer of its own.
 
+Counts, indices, outcodes and ids are whole numbers, compared exactly (``5.0`` is 5), with an
+"off by one" diagnosis for counts. Boundary cases (a point on the line of a side, a segment
+through a corner, a segment parallel to a side) are not left to chance: the clipping exercises
+draw one on purpose in about 15 % of the seeds, name it in their ``boundary`` attribute (None
+otherwise) and say so in the worked solution; their other variants have none.
+
 Conventions (those of :mod:`course_lib.clipping`): a point on the boundary of the clip region is
 inside; outcode bits left = 1, right = 2, bottom = 4, top = 8, near = 16, far = 32; the back-face
 test uses the view vector from the eye to the face.

@@ -4,6 +4,9 @@ The exercises are in one module per topic of this package; import them from
 :mod:`course_lib.exercises.ch05`.
 """
 
+import math
+from fractions import Fraction
+
 import numpy as np
 
 from ... import format as fmt
@@ -24,7 +27,11 @@ def _unanswered(answer):
 
 
 def _read_index_set(answer, n, what):
-    """A set of indices in ``range(n)`` (or a boolean mask of length n), or a Feedback."""
+    """The whole numbers of the answer as a set (or a boolean mask of length n), or a Feedback.
+
+    ``3.0`` is the index 3; True, 0.5 and text are refused. Numbers outside ``range(n)`` are
+    kept: :func:`_set_feedback` tells that they name nothing.
+    """
     if _unanswered(answer):
         return Feedback("unanswered", UNANSWERED)
     if isinstance(answer, (str, bytes, dict)):
@@ -42,9 +49,9 @@ def _read_index_set(answer, n, what):
                                                                       np.floating)):
             return Feedback("invalid", f"Give {what} as a list of whole numbers, e.g. `[0, 3]` "
                             "(`[]` if there are none).", "unreadable")
-        if not float(item).is_integer() or not 0 <= item < n:
-            return Feedback("invalid", f"{item!r} is not one of the indices 0 to {n - 1}.",
-                            "unreadable")
+        if not float(item).is_integer():
+            return Feedback("invalid", f"{item!r} is not a whole number: the indices are 0 to "
+                            f"{n - 1}.", "unreadable")
         found.add(int(item))
     return found
 
@@ -54,7 +61,11 @@ def _names(indices):
 
 
 def _set_feedback(answer, expected, mistakes, n, what, hint, right):
-    """Judge a set of indices; `mistakes` are Mistakes with sets as values; `right` praises."""
+    """Judge a set of indices; `mistakes` are Mistakes with sets as values; `right` praises.
+
+    Beyond the anticipated mistakes: every index one too large ("counted from 1"), an index
+    outside ``range(n)`` ("out of range"), otherwise the indices missing and those too many.
+    """
     value = _read_index_set(answer, n, what)
     if isinstance(value, Feedback):
         return value
@@ -63,6 +74,13 @@ def _set_feedback(answer, expected, mistakes, n, what, hint, right):
     for mistake in mistakes:
         if value == mistake.value and mistake.value != expected:
             return Feedback("wrong", mistake.explanation, mistake.key)
+    if expected and value == {i + 1 for i in expected}:
+        return Feedback("wrong", "Every index is one too large: the numbering starts at **0**. "
+                        + hint, "counted from 1")
+    outside = sorted(i for i in value if not 0 <= i < n)
+    if outside:
+        return Feedback("wrong", f"There is no {outside[0]} here: the numbers run from 0 to "
+                        f"{n - 1}. " + hint, "out of range")
     missing, extra = sorted(expected - value), sorted(value - expected)
     parts = []
     if extra:
@@ -70,6 +88,21 @@ def _set_feedback(answer, expected, mistakes, n, what, hint, right):
     if missing:
         parts.append(f"{_names(missing)} {'is' if len(missing) == 1 else 'are'} missing")
     return Feedback("wrong", f"Not quite: {' and '.join(parts)}. {hint}", "indices differ")
+
+
+def _one_whole(feedback, what, off_by_one):
+    """The verdict on one whole number, in the words of one number.
+
+    The core's whole-number diagnoses speak of components (of a vector); for a single count
+    the off-by-one verdict gets `off_by_one`, and any other unexplained one says the number
+    differs (diagnosis ``"value differs"``, which the exercise's advice then follows).
+    """
+    if feedback.diagnosis == "off by one":
+        return Feedback("wrong", off_by_one, "off by one")
+    if feedback.diagnosis == "components differ":
+        return Feedback("wrong", f"{what[:1].upper() + what[1:]} should be different.",
+                        "value differs")
+    return feedback
 
 
 def _cyclic_match(a, b, atol=2e-3):
@@ -124,6 +157,142 @@ def _draw_box_2d(rng):
 
 def _clip_words(ex):
     return rf"The clip rectangle is {_box_words(ex.box_min, ex.box_max)}"
+
+
+# ---------------------------------------------------------------------------------------------
+# Boundary cases, drawn on purpose
+# ---------------------------------------------------------------------------------------------
+
+#: The share of the seeds whose variant is a boundary case on purpose; the others have none.
+BOUNDARY_SHARE = 0.15
+#: The boundary cases, as the ``boundary`` attribute names them. A point on a side: one of its
+#: coordinates equals a bound (:math:`x = x_{min}`, ...), so it lies on the line (plane) of a
+#: side, where the strict tests of the outcodes and the :math:`t_k` of Liang-Barsky decide.
+ON_SIDE = "point on a side"
+#: The segment passes exactly through a corner of the rectangle (two sides at one t).
+THROUGH_CORNER = "through a corner"
+#: In 3D: the segment passes exactly through an edge or a corner of the box.
+THROUGH_EDGE = "through an edge or corner"
+#: The segment is parallel to two sides (one coordinate does not change): :math:`p_k = 0`.
+PARALLEL = "parallel to a side"
+
+
+class _Boundary:
+    """Mixin (put it first): a share of the seeds gives a boundary case on purpose.
+
+    Before the variant is drawn, ``setup`` decides, with probability :data:`BOUNDARY_SHARE`,
+    whether this seed is a boundary case and which one of ``boundary_kinds``
+    (``self._wanted``; None for an ordinary variant). ``draw`` builds the variant to suit, and
+    ``boundary_fits()`` (which ``acceptable`` calls) keeps it only if ``boundary_cases()``, the
+    cases it really has, are exactly the one wanted, or none for an ordinary variant. The
+    attribute ``boundary`` names the case (None for an ordinary variant).
+    """
+
+    boundary_kinds = (ON_SIDE,)
+    boundary = None
+
+    def setup(self, rng):
+        wanted = rng.random() < BOUNDARY_SHARE
+        self._wanted = str(pick(rng, self.boundary_kinds)) if wanted else None
+        super().setup(rng)
+
+    def boundary_cases(self):
+        """The boundary cases the drawn variant has (a list of the names above)."""
+        raise NotImplementedError
+
+    def boundary_fits(self):
+        self.boundary = self._wanted
+        return self.boundary_cases() == ([] if self._wanted is None else [self._wanted])
+
+
+def _off_bound_point(rng, lo, hi, margin):
+    """A point of whole coordinates from ``lo - margin`` to ``hi + margin``, none on a bound."""
+    return np.array([float(pick(rng, [v for v in range(int(a) - margin, int(b) + margin + 1)
+                                      if v not in (a, b)])) for a, b in zip(lo, hi)])
+
+
+def _onto_bound(rng, point, lo, hi):
+    """`point` with one coordinate moved onto a bound of its axis (a point on a side)."""
+    point = np.array(point, dtype=float)
+    k = int(rng.integers(len(point)))
+    point[k] = (lo, hi)[int(rng.integers(2))][k]
+    return point
+
+
+def _on_bound(points, lo, hi):
+    """Whether a coordinate of one of the points equals a bound (a point on a side's line)."""
+    p = np.asarray(points, dtype=float)
+    return bool(np.any((p == lo) | (p == hi)))
+
+
+def _through_corner(p0, p1, lo, hi):
+    """Whether the segment passes, strictly between its end points, through a point of the
+    box's boundary that lies on two sides at once (a corner in 2D, an edge or corner in 3D).
+
+    Exact: the coordinates are whole numbers, so the crossings are compared as fractions.
+    """
+    p0 = [Fraction(float(v)) for v in p0]
+    d = [Fraction(float(b)) - a for a, b in zip(p0, p1)]
+    lo = [Fraction(float(v)) for v in lo]
+    hi = [Fraction(float(v)) for v in hi]
+    for i, di in enumerate(d):
+        if di == 0:
+            continue
+        for bound in (lo[i], hi[i]):
+            t = (bound - p0[i]) / di
+            if not 0 < t < 1:
+                continue
+            point = [a + t * b for a, b in zip(p0, d)]
+            inside = all(lo[k] <= point[k] <= hi[k] for k in range(len(point)))
+            if inside and any(point[k] in (lo[k], hi[k]) for k in range(len(point)) if k != i):
+                return True
+    return False
+
+
+def _segment_cases(p0, p1, lo, hi):
+    """The boundary cases of a segment: on a side, through a corner (edge), parallel."""
+    found = []
+    if _on_bound([p0, p1], lo, hi):
+        found.append(ON_SIDE)
+    if _through_corner(p0, p1, lo, hi):
+        found.append(THROUGH_CORNER if len(p0) == 2 else THROUGH_EDGE)
+    if np.any(np.asarray(p1, dtype=float) == p0):
+        found.append(PARALLEL)
+    return found
+
+
+def _through_corner_segment(rng, p0, lo, hi, reach=3):
+    """An end point p1 of whole coordinates such that p0 -> p1 passes through a corner."""
+    corners = [np.array(c, dtype=float) for c in
+               np.array(np.meshgrid(*zip(lo, hi))).reshape(len(lo), -1).T]
+    corner = pick(rng, corners)
+    u = corner - p0
+    g = math.gcd(*(int(abs(v)) for v in u)) or 1
+    return corner + int(rng.integers(1, reach + 1)) * u / g
+
+
+def _boundary_segment(rng, lo, hi, wanted, margin=3, point=None):
+    """Two end points of whole coordinates, within `margin` of the box.
+
+    Without `wanted` neither lies on the line (plane) of a side; with it, the boundary case it
+    names: ON_SIDE one end point on a side's line, THROUGH_CORNER (THROUGH_EDGE) a segment
+    through a corner of the box, PARALLEL one coordinate the same at both ends. `point` draws
+    one end point (by default :func:`_off_bound_point`).
+    """
+    draw = point or (lambda: _off_bound_point(rng, lo, hi, margin))
+    while True:
+        p0, p1 = draw(), draw()
+        if wanted == ON_SIDE:
+            p0 = _onto_bound(rng, p0, lo, hi)
+            if rng.random() < 0.5:
+                p0, p1 = p1, p0
+        elif wanted in (THROUGH_CORNER, THROUGH_EDGE):
+            p1 = _through_corner_segment(rng, p0, lo, hi)
+        elif wanted == PARALLEL:
+            k = int(rng.integers(len(p0)))
+            p1[k] = p0[k]
+        if np.all(p1 >= lo - margin - 2) and np.all(p1 <= hi + margin + 2):
+            return p0, p1
 
 
 class _Listed(DrawnExercise):

@@ -6,8 +6,8 @@ Part of :mod:`course_lib.exercises.ch05`, which imports every exercise from here
 import numpy as np
 
 from ... import clipping
-from ..core import Mistake, data_note, small_ints
-from . import _Listed, _set_feedback, _vec
+from ..core import Mistake, Worked, data_note, small_ints
+from . import _Listed, _num, _set_feedback, _vec
 
 __all__ = [
     "BackFaceCulling",
@@ -85,6 +85,38 @@ class BackFaceCulling(_Listed):
                              r"For each face compute $n_i \cdot (P_i - E)$; the back faces are "
                              r"those where it is $\ge 0$.",
                              "Exactly these faces turn their backs to the eye.")
+
+    def _view(self, i):
+        """The view vector of face i, from the eye to its point, and the dot product."""
+        v = self.points[i] - self.eye
+        return v, float(self.normals[i] @ v)
+
+    def hints(self):
+        v, dot = self._view(0)
+        return [
+            r"A face turns its back to the eye when its outward normal points away from the "
+            r"eye: with the view vector $v_i = P_i - E$ from the eye **to** the face, it is a "
+            r"back face when $n_i \cdot v_i \ge 0$.",
+            r"In perspective the view vector differs from face to face: compute "
+            r"$P_i - E$ for each face (not the gaze direction $g$), then the dot product with "
+            r"its normal, and keep the faces where it is $\ge 0$.",
+            rf"Face 0: $P_0 - E = {_vec(v)}$ and $n_0 \cdot (P_0 - E) = {_num(dot)}$, so it "
+            rf"is a {'back' if dot >= 0 else 'front'} face. The other four likewise.",
+        ]
+
+    def worked(self):
+        steps, back = [], []
+        for i in range(len(self.points)):
+            v, dot = self._view(i)
+            verdict = "back face (culled)" if dot >= 0 else "front face (kept)"
+            steps.append(rf"Face {i}: $v_{i} = P_{i} - E = {_vec(self.points[i])} - "
+                         rf"{_vec(self.eye)} = {_vec(v)}$, $n_{i} \cdot v_{i} = "
+                         rf"{_vec(self.normals[i])} \cdot {_vec(v)} = {_num(dot)}$: {verdict}.")
+            if dot >= 0:
+                back.append(i)
+        steps.append(r"Back-face culling removes the faces with $n_i \cdot v_i \ge 0$: "
+                     + ", ".join(str(i) for i in back) + ".")
+        return Worked(steps, back)
 
     def statement(self):
         rows = "\n".join(rf"| {i} | ${_vec(p)}$ | ${_vec(n)}$ |"

@@ -3,13 +3,16 @@
 Part of :mod:`course_lib.exercises.ch05`, which imports every exercise from here.
 """
 
+from fractions import Fraction
+
 import numpy as np
 
 from ... import clipping
-from ..core import (APART, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, data_note,
-                    gap, pick, read_floats)
-from . import (_box_words, _clip_words, _draw_box_2d, _ints_between, _Listed, _quick_code,
-               _same_segment, _unanswered, _vec)
+from ..core import (APART, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, Worked,
+                    data_note, gap, latex_fraction, latex_vector, pick, read_floats)
+from . import (ON_SIDE, THROUGH_CORNER, _Boundary, _boundary_segment, _box_words, _clip_words,
+               _draw_box_2d, _Listed, _off_bound_point, _on_bound, _onto_bound, _one_whole,
+               _quick_code, _same_segment, _segment_cases, _unanswered, _vec)
 
 __all__ = [
     "CohenSutherlandClip",
@@ -34,6 +37,43 @@ def _swap_sides(code):
     return (low << 1) | (high >> 1)
 
 
+#: The sides named by the bits 0 to 5 of an outcode.
+_SIDES = ("left", "right", "bottom", "top", "near", "far")
+
+
+def _sides_of(code):
+    """The names of the sides an outcode's bits stand for, lowest bit first."""
+    return [side for k, side in enumerate(_SIDES) if int(code) >> k & 1]
+
+
+def _code_words(code, dim):
+    """An outcode as LaTeX-free words: ``1001 (left, top)`` or ``0000 (inside)``."""
+    return f"{_bits(code, dim)} ({', '.join(_sides_of(code)) or 'inside'})"
+
+
+def _code_by_hand(point, lo, hi):
+    """The outcode of `point`, side by side (strict inequalities), and the reasons, as LaTeX.
+
+    Returns (code, reasons, on): `reasons` names each side the point is beyond with the
+    comparison that puts it there, `on` each side whose line the point lies on.
+    """
+    code, reasons, on = 0, [], []
+    for k, axis in enumerate("xyz"[:len(point)]):
+        v = float(point[k])
+        if v < lo[k]:
+            code += 1 << 2 * k
+            reasons.append(rf"${axis} = {latex_fraction(v)} < {latex_fraction(lo[k])}$: "
+                           rf"{_SIDES[2 * k]} ({1 << 2 * k})")
+        elif v > hi[k]:
+            code += 1 << 2 * k + 1
+            reasons.append(rf"${axis} = {latex_fraction(v)} > {latex_fraction(hi[k])}$: "
+                           rf"{_SIDES[2 * k + 1]} ({1 << 2 * k + 1})")
+        if v == lo[k] or v == hi[k]:
+            on.append(rf"${axis} = {latex_fraction(v)}$, on the {_SIDES[2 * k + (v == hi[k])]} "
+                      r"side's " + ("line" if len(point) == 2 else "plane"))
+    return code, reasons, on
+
+
 def _read_codes(answer, n, dim):
     """A list of n outcodes given as integers or bit strings, or a Feedback."""
     if _unanswered(answer):
@@ -56,23 +96,35 @@ def _read_codes(answer, n, dim):
                                 f"outcode has {2 * dim} (one per side of the "
                                 f"{'rectangle' if dim == 2 else 'box'}).", "too many bits")
             codes.append(int(text, 2))
-        elif isinstance(item, (int, np.integer)) and not isinstance(item, (bool, np.bool_)):
-            if not 0 <= item < 2 ** (2 * dim):
-                return Feedback("invalid", f"{item} is not a {2 * dim}-bit outcode.",
-                                "too many bits")
+        elif isinstance(item, (int, np.integer, float, np.floating)) \
+                and not isinstance(item, (bool, np.bool_)):
+            if not float(item).is_integer():
+                return Feedback("invalid", f"{item!r} is not a whole number; give {form}.",
+                                "unreadable")
             codes.append(int(item))
         else:
             return Feedback("invalid", f"Give {form}.", "unreadable")
+    for code in codes:
+        if not 0 <= code < 2 ** (2 * dim):
+            return Feedback("wrong", f"{code} is no outcode: in {dim}D an outcode has "
+                            f"{2 * dim} bits, a whole number from 0 to {2 ** (2 * dim) - 1} (the "
+                            "sum of the values of the sides the point is beyond).",
+                            "not an outcode")
     return codes
 
 
-class Outcodes(_Listed):
+class Outcodes(_Boundary, _Listed):
     r"""The Cohen-Sutherland outcodes of a few points (2D rectangle or 3D box).
 
     Bit values: left 1, right 2, bottom 4, top 8 (near 16, far 32 in 3D); a point on the
-    boundary is inside.
+    boundary is inside. The codes may be given as whole numbers (``9`` or ``9.0``) or as bit
+    strings (``'1001'``).
 
-    Attributes: ``dim``, ``box_min``, ``box_max``, ``points``.
+    In about 15 % of the seeds one point lies on the line (plane) of a side, a coordinate equal
+    to a bound, on purpose: ``boundary`` is then ``"point on a side"`` (else None), and no
+    other variant has a point there.
+
+    Attributes: ``dim``, ``box_min``, ``box_max``, ``points``, ``boundary``.
 
     Examples
     --------
@@ -93,10 +145,16 @@ class Outcodes(_Listed):
         self.dim = int(pick(rng, (2, 3)))
         self.box_min = rng.integers(-2, 1, size=self.dim).astype(float)
         self.box_max = self.box_min + rng.integers(3, 5, size=self.dim)
-        self.points = _ints_between(rng, self.box_min - 2, self.box_max + 2,
-                                    size=(5, self.dim))
+        points = [_off_bound_point(rng, self.box_min, self.box_max, 2) for _ in range(5)]
+        if self._wanted:
+            k = int(rng.integers(len(points)))
+            points[k] = _onto_bound(rng, points[k], self.box_min, self.box_max)
+        self.points = np.array(points)
         self.expected = [int(c) for c in clipping.outcode(self.points, self.box_min,
                                                           self.box_max)]
+
+    def boundary_cases(self):
+        return [ON_SIDE] if _on_bound(self.points, self.box_min, self.box_max) else []
 
     def _on_boundary(self):
         return [int(sum((p[k] == self.box_min[k]) << (2 * k) | (p[k] == self.box_max[k])
@@ -106,7 +164,7 @@ class Outcodes(_Listed):
         counts = [bin(c).count("1") for c in self.expected]
         z_bits = any(c >> 4 for c in self.expected)
         return (max(counts) >= 2 and 0 in self.expected and (self.dim == 2 or z_bits)
-                and len(set(self.expected)) >= 4)
+                and len(set(self.expected)) >= 4 and self.boundary_fits())
 
     def mistakes(self):
         dim = self.dim
@@ -148,9 +206,56 @@ class Outcodes(_Listed):
             if codes == mistake.value:
                 return Feedback("wrong", mistake.explanation, mistake.key)
         off = [i for i, (a, b) in enumerate(zip(codes, self.expected)) if a != b]
-        return Feedback("wrong", f"The outcodes of the points {off} (counted from 0) are off. "
-                        "For each side compare one coordinate with the box: a bit is set when "
-                        "the point is strictly beyond that side.", "codes differ")
+        first = off[0]
+        wrong = codes[first] ^ self.expected[first]
+        sides = ", ".join(_sides_of(wrong))
+        return Feedback("wrong", f"The outcodes of the points {off} (counted from 0) are off; "
+                        f"in that of point {first} the bits of {sides} are wrong. For each side "
+                        "compare one coordinate with the box: a bit is set when the point is "
+                        "strictly beyond that side.", "codes differ")
+
+    def _bit_table(self):
+        bits = ("left 1 ($x < x_{min}$), right 2 ($x > x_{max}$), bottom 4 ($y < y_{min}$), "
+                "top 8 ($y > y_{max}$)")
+        if self.dim == 3:
+            bits += ", near 16 ($z < z_{min}$), far 32 ($z > z_{max}$)"
+        return bits
+
+    def hints(self):
+        lo, hi = self.box_min, self.box_max
+        code, reasons, on = _code_by_hand(self.points[0], lo, hi)
+        last = (rf"Point 0, ${_vec(self.points[0])}$: "
+                + ("; ".join(reasons) if reasons else "beyond no side") + rf", so its code is "
+                rf"{code} (`'{_bits(code, self.dim)}'`).")
+        if self.boundary:
+            k = next(i for i, p in enumerate(self.points) if _code_by_hand(p, lo, hi)[2])
+            where = _code_by_hand(self.points[k], lo, hi)[2][0]
+            last += (rf" Note that point 0 has {where}, which is not beyond that side." if k == 0
+                     else rf" Careful with point {k}: it has {where}.")
+        return [
+            r"An outcode has one bit per side of the clip region; a bit is set when the point "
+            r"lies **strictly** beyond that side. Bit values: " + self._bit_table() + ".",
+            r"For each point compare each coordinate with the two bounds of its axis and add "
+            r"up the values of the sides the point is beyond. A coordinate equal to a bound is "
+            r"not beyond it: a point on the boundary is inside.",
+            last,
+        ]
+
+    def worked(self):
+        lo, hi = self.box_min, self.box_max
+        steps = [r"Bits: " + self._bit_table() + r"; a point on a side's line is not beyond "
+                 r"it (strict inequalities)."]
+        codes = []
+        for i, p in enumerate(self.points):
+            code, reasons, on = _code_by_hand(p, lo, hi)
+            codes.append(code)
+            text = rf"Point {i}, ${_vec(p)}$: " + ("; ".join(reasons) if reasons else
+                                                   "beyond no side")
+            if on:
+                text += ("; " + "; ".join(on) + r", which counts as inside: no bit for that "
+                         r"side (this is the boundary case)")
+            steps.append(text + rf". Code ${code}$ = `'{_bits(code, self.dim)}'`.")
+        return Worked(steps, codes)
 
     def statement(self):
         rows = "\n".join(rf"| {i} | ${_vec(p)}$ |" for i, p in enumerate(self.points))
@@ -205,14 +310,19 @@ def _segment_kind(p0, p1, lo, hi):
     return "half"
 
 
-class CohenSutherlandDecision(_Listed):
+class CohenSutherlandDecision(_Boundary, _Listed):
     r"""Cohen-Sutherland's first test for a few segments: accept, reject or clip.
 
     With the outcodes :math:`c_0, c_1` of the end points: accept if :math:`c_0 \lor c_1 = 0`,
     reject if :math:`c_0 \land c_1 \ne 0`, clip otherwise, even when the segment turns out to
-    miss the rectangle.
+    miss the rectangle. The five segments are one to accept, one to reject, one that misses
+    the rectangle with its end points beyond different sides, one that crosses it with both
+    end points outside, and one more (half inside, or another to accept or reject).
 
-    Attributes: ``box_min``, ``box_max``, ``segments`` (shape (5, 2, 2)).
+    In about 15 % of the seeds one end point lies on the line of a side on purpose
+    (``boundary == "point on a side"``, else None); no other variant has one there.
+
+    Attributes: ``box_min``, ``box_max``, ``segments`` (shape (5, 2, 2)), ``boundary``.
 
     Examples
     --------
@@ -225,34 +335,50 @@ class CohenSutherlandDecision(_Listed):
 
     title = "Cohen-Sutherland: accept, reject or clip?"
     answer_form = "custom"
+    #: How many random segments are tried for one of a kind before the variant is redrawn.
+    TRIES = 400
 
     def draw(self, rng):
         self.box_min, self.box_max = _draw_box_2d(rng)
+        kinds = ["accept", "reject", "trick", "crossing",
+                 str(pick(rng, ("half", "half", "accept", "reject")))]
+        on_side = int(rng.integers(len(kinds))) if self._wanted else None
+        found = [self._segment_of_kind(rng, kind, k == on_side) for k, kind in enumerate(kinds)]
+        if any(f is None for f in found):
+            self.segments, self._kinds, self.expected = None, kinds, None
+            return
+        order = rng.permutation(len(kinds))
+        self.segments = np.array([found[i] for i in order])
+        self._kinds = [kinds[i] for i in order]
+        self.expected = [self._decision(k) for k in self._kinds]
+
+    def _segment_of_kind(self, rng, kind, on_side):
+        """A segment of the kind wanted (none if TRIES draws find none); with `on_side` one of
+        its end points lies on the line of a side, otherwise neither does."""
         lo, hi = self.box_min, self.box_max
-        wanted = ["accept", "reject", "half", "trick", "crossing"]
-        found = {}
-        while len(found) < len(wanted):
-            p0 = _ints_between(rng, lo - 3, hi + 3)
-            p1 = _ints_between(rng, lo - 3, hi + 3)
-            if np.array_equal(p0, p1):
+        for _ in range(self.TRIES):
+            p0 = _off_bound_point(rng, lo, hi, 3)
+            p1 = _off_bound_point(rng, lo, hi, 3)
+            if on_side:
+                p0 = _onto_bound(rng, p0, lo, hi)
+                if rng.random() < 0.5:
+                    p0, p1 = p1, p0
+            if np.array_equal(p0, p1) or self._touches_corner(p0, p1):
                 continue
-            c0, c1 = _quick_code(p0, lo, hi), _quick_code(p1, lo, hi)
-            quick = "accept" if not c0 | c1 else "reject" if c0 & c1 else \
-                "half" if not (c0 and c1) else "both out"
-            if quick in found or (quick == "both out" and "trick" in found
-                                  and "crossing" in found):
+            if _segment_kind(p0, p1, lo, hi) != kind:
                 continue
-            kind = _segment_kind(p0, p1, lo, hi)
             if kind in ("half", "crossing"):        # clearly visible, not just touching
                 q0, q1 = clipping.liang_barsky(p0, p1, lo, hi)
                 if np.linalg.norm(q1 - q0) < 0.5:
                     continue
-            if kind not in found and not self._touches_corner(p0, p1):
-                found[kind] = (p0, p1)
-        order = rng.permutation(len(wanted))
-        self.segments = np.array([found[wanted[i]] for i in order])
-        self._kinds = [wanted[i] for i in order]
-        self.expected = [self._decision(k) for k in self._kinds]
+            return p0, p1
+        return None
+
+    def boundary_cases(self):
+        return [ON_SIDE] if _on_bound(self.segments, self.box_min, self.box_max) else []
+
+    def acceptable(self):
+        return self.segments is not None and self.boundary_fits()
 
     def _touches_corner(self, p0, p1):
         """Whether the segment's line passes within a hair of a corner (ambiguous by eye)."""
@@ -306,6 +432,41 @@ class CohenSutherlandDecision(_Listed):
         return Feedback("wrong", f"The decisions for the segments {off} (counted from 0) are "
                         r"off. Compute both outcodes; accept if $c_0 \lor c_1 = 0$, reject if "
                         r"$c_0 \land c_1 \ne 0$, clip otherwise.", "decisions differ")
+
+    def _codes(self):
+        lo, hi = self.box_min, self.box_max
+        return [(_code_by_hand(a, lo, hi), _code_by_hand(b, lo, hi)) for a, b in self.segments]
+
+    def hints(self):
+        listed = "; ".join(rf"segment {i}: `{_bits(c0, 2)}`, `{_bits(c1, 2)}`"
+                           for i, ((c0, _, _), (c1, _, _)) in enumerate(self._codes()))
+        return [
+            r"The first test looks only at the outcodes $c_0, c_1$ of the two end points: "
+            r"accept when $c_0 \lor c_1 = 0$ (both inside), reject when $c_0 \land c_1 \ne 0$ "
+            r"(both beyond one and the same side), clip otherwise.",
+            r"Compute both outcodes of each segment (left 1, right 2, bottom 4, top 8, each bit "
+            r"set when the point is strictly beyond that side), then their bitwise OR and AND. "
+            r"Both end points outside is not enough to reject.",
+            rf"The outcodes $(c_0, c_1)$ are: {listed}.",
+        ]
+
+    def worked(self):
+        steps = [_clip_words(self) + r". For each segment: the outcodes $c_0, c_1$; accept if "
+                 r"$c_0 \lor c_1 = 0$, reject if $c_0 \land c_1 \ne 0$, otherwise clip."]
+        decisions = []
+        for i, ((c0, _, on0), (c1, _, on1)) in enumerate(self._codes()):
+            either, both = c0 | c1, c0 & c1
+            decision = "accept" if not either else "reject" if both else "clip"
+            decisions.append(decision)
+            text = (rf"Segment {i}: $c_0 = {_bits(c0, 2)}$, $c_1 = {_bits(c1, 2)}$; "
+                    rf"$c_0 \lor c_1 = {_bits(either, 2)}$, $c_0 \land c_1 = {_bits(both, 2)}$: "
+                    rf"**{decision}**.")
+            for end, on in ((0, on0), (1, on1)):
+                if on:
+                    text += (rf" ($p_{end}$ has {on[0]}: it is not beyond that side, so that "
+                             r"bit is 0; this is the boundary case.)")
+            steps.append(text)
+        return Worked(steps, decisions)
 
     def statement(self):
         rows = "\n".join(rf"| {i} | ${_vec(a)}$ | ${_vec(b)}$ |"
@@ -370,13 +531,122 @@ def _segment_feedback(answer, expected, mistakes, dim, hint):
     return Feedback("wrong", "The end points are not right yet. " + hint, "points differ")
 
 
-class CohenSutherlandClip(_Listed):
+def _exact_enough(steps, lo, hi):
+    """Whether every intersection of Cohen-Sutherland's steps is on a bound exactly or clearly
+    off it.
+
+    The steps are computed in floating point: a cut that should land exactly on a corner can
+    come out a hair beyond the other side, and then one more (needless) cut follows. Variants
+    where that could happen are not drawn, so the float steps are those of exact arithmetic.
+    """
+    for step in steps:
+        point = step.get("new_point")
+        if point is None:
+            continue
+        for k, v in enumerate(point):
+            for bound in (lo[k], hi[k]):
+                if v != bound and abs(v - bound) < 1e-9:
+                    return False
+    return True
+
+
+def _frac_code(point, lo, hi):
+    """The outcode of a point of fractions (strict inequalities)."""
+    code = 0
+    for k, v in enumerate(point):
+        code |= (v < lo[k]) << 2 * k | (v > hi[k]) << 2 * k + 1
+    return code
+
+
+def _passes_by_hand(p0, p1, lo, hi):
+    """Cohen-Sutherland worked by hand, in exact fractions: (the segment or None, the passes).
+
+    Each pass is a dict: ``codes`` (c0, c1), ``action`` (accept, reject, clip) and, for a
+    clip, ``end`` (the end point moved), ``side``, ``axis``, ``value`` (the side's line), ``t``
+    (from the moved end point towards the other) and ``point`` (the intersection).
+    """
+    ends = [[Fraction(float(v)) for v in p0], [Fraction(float(v)) for v in p1]]
+    lo = [Fraction(float(v)) for v in lo]
+    hi = [Fraction(float(v)) for v in hi]
+    passes = []
+    while True:
+        codes = (_frac_code(ends[0], lo, hi), _frac_code(ends[1], lo, hi))
+        step = {"codes": codes}
+        passes.append(step)
+        if not codes[0] | codes[1]:
+            step["action"] = "accept"
+            return [list(e) for e in ends], passes
+        if codes[0] & codes[1]:
+            step["action"] = "reject"
+            return None, passes
+        end = 0 if codes[0] else 1
+        bit = (codes[end] & -codes[end]).bit_length() - 1
+        axis, value = bit // 2, (lo, hi)[bit % 2][bit // 2]
+        a, b = ends[end], ends[1 - end]
+        t = (value - a[axis]) / (b[axis] - a[axis])
+        point = [x + t * (y - x) for x, y in zip(a, b)]
+        step.update(action="clip", end=end, side=_SIDES[bit], axis=axis, value=value, t=t,
+                    start=list(a), towards=list(b), point=point)
+        ends[end] = point
+
+
+def _paren(x):
+    """A number as LaTeX, in parentheses when negative (after a minus sign)."""
+    return f"({latex_fraction(float(x))})" if x < 0 else latex_fraction(float(x))
+
+
+def _vec_exact(point):
+    return latex_vector([float(v) for v in point])
+
+
+def _pass_words(k, step, lo, hi):
+    """The text of one pass of :func:`_passes_by_hand`."""
+    c0, c1 = step["codes"]
+    head = (rf"Pass {k}: $c_0 = {_bits(c0, 2)}$, $c_1 = {_bits(c1, 2)}$")
+    if step["action"] == "accept":
+        return head + r": $c_0 \lor c_1 = 0$, **accept**."
+    if step["action"] == "reject":
+        return head + (rf": $c_0 \land c_1 = {_bits(c0 & c1, 2)} \ne 0$ (both beyond the "
+                       rf"{', '.join(_sides_of(c0 & c1))} side), **reject**: nothing is left.")
+    e, axis, a, b = step["end"], step["axis"], step["start"], step["towards"]
+    name = "xy"[axis]
+    text = (head + rf": neither test decides. $p_{e}$ is outside; the lowest bit of its code "
+            rf"is {step['side']}: cut with ${name} = {latex_fraction(float(step['value']))}$, "
+            rf"$t = \frac{{{latex_fraction(float(step['value']))} - {_paren(a[axis])}}}"
+            rf"{{{latex_fraction(float(b[axis]))} - {_paren(a[axis])}}} = "
+            rf"{latex_fraction(float(step['t']))}$, "
+            rf"new $p_{e} = {_vec_exact(step['point'])}$ (1 intersection).")
+    on = [k for k, v in enumerate(step["point"]) if v in (lo[k], hi[k])]
+    if len(on) >= 2:
+        text += (r" The cut lands exactly on a corner of the rectangle, on two sides at once; a "
+                 r"point on the boundary is inside, so its code is 0 (this is the boundary "
+                 r"case).")
+    return text
+
+
+def _ends_on_side(p0, p1, lo, hi):
+    """Sentences for the end points that lie on the line of a side (the boundary case)."""
+    out = []
+    for e, p in ((0, p0), (1, p1)):
+        _, _, on = _code_by_hand(p, lo, hi)
+        if on:
+            out.append(rf"$p_{e} = {_vec(p)}$ has {on[0]}: it is not beyond that side (the test "
+                       r"is strict), so that bit is 0. This is the boundary case.")
+    return out
+
+
+class CohenSutherlandClip(_Boundary, _Listed):
     r"""The segment Cohen-Sutherland leaves of a segment with an end point in a corner region.
 
     An end point beyond two sides may need two intersections: the first one can still lie
     outside the rectangle.
 
-    Attributes: ``box_min``, ``box_max``, ``p0``, ``p1``.
+    In about 15 % of the seeds the variant is a boundary case on purpose, named by
+    ``boundary``: an end point on the line of a side (``"point on a side"``), or a segment
+    through a corner of the rectangle (``"through a corner"``); None otherwise, and then there
+    is neither.
+
+    Attributes: ``box_min``, ``box_max``, ``p0``, ``p1``, ``boundary``.
 
     Examples
     --------
@@ -396,13 +666,18 @@ class CohenSutherlandClip(_Listed):
         self.box_min, self.box_max = _draw_box_2d(rng)
         lo, hi = self.box_min, self.box_max
         while True:                     # one end point in a corner region, not trivially rejected
-            self.p0 = _ints_between(rng, lo - 3, hi + 3)
-            self.p1 = _ints_between(rng, lo - 3, hi + 3)
+            self.p0, self.p1 = _boundary_segment(rng, lo, hi, self._wanted)
             c0, c1 = _quick_code(self.p0, lo, hi), _quick_code(self.p1, lo, hi)
             if not c0 & c1 and max(bin(c0).count("1"), bin(c1).count("1")) == 2:
                 break
         result, self._steps = clipping.cohen_sutherland_steps(self.p0, self.p1, lo, hi)
         self.expected = None if result is None else np.array(result)
+
+    boundary_kinds = (ON_SIDE, THROUGH_CORNER)
+
+    def boundary_cases(self):
+        return [c for c in _segment_cases(self.p0, self.p1, self.box_min, self.box_max)
+                if c in self.boundary_kinds]
 
     def _one_clip_each(self):
         lo, hi = self.box_min, self.box_max
@@ -420,7 +695,8 @@ class CohenSutherlandClip(_Listed):
                 or np.linalg.norm(self.expected[1] - self.expected[0]) < 0.5:
             return False
         one_each = self._one_clip_each()
-        return not _same_segment(one_each, self.expected)
+        return (not _same_segment(one_each, self.expected) and self.boundary_fits()
+                and _exact_enough(self._steps, self.box_min, self.box_max))
 
     def mistakes(self):
         clamped = np.clip([self.p0, self.p1], self.box_min, self.box_max)
@@ -449,6 +725,37 @@ class CohenSutherlandClip(_Listed):
                                  "Cut at the side named by the lowest bit of an outside end "
                                  "point's code, then recompute the codes and test again.")
 
+    def hints(self):
+        lo, hi = self.box_min, self.box_max
+        _, passes = _passes_by_hand(self.p0, self.p1, lo, hi)
+        first = passes[0]
+        return [
+            r"Cohen-Sutherland repeats one pass until it can accept or reject: compute both "
+            r"outcodes; accept if $c_0 \lor c_1 = 0$, reject if $c_0 \land c_1 \ne 0$; "
+            r"otherwise replace an outside end point by the intersection with the side of the "
+            r"lowest bit of its code.",
+            r"The intersection with a side's line, e.g. $x = x_{side}$, lies at "
+            r"$t = \frac{x_{side} - x_a}{x_b - x_a}$ from the moved end point $a$ towards the "
+            r"other one $b$: $a + t\,(b - a)$. After each cut compute the new code again: an "
+            r"end point in a corner region may need a second cut.",
+            rf"First pass: $c_0 = {_bits(first['codes'][0], 2)}$, "
+            rf"$c_1 = {_bits(first['codes'][1], 2)}$; the first cut is with the "
+            rf"{first['side']} side and gives $p_{first['end']} = "
+            rf"{_vec_exact(first['point'])}$. {len(passes) - 1} cuts in all.",
+        ]
+
+    def worked(self):
+        lo, hi = self.box_min, self.box_max
+        ends, passes = _passes_by_hand(self.p0, self.p1, lo, hi)
+        steps = [_clip_words(self) + rf"; the segment runs from $p_0 = {_vec(self.p0)}$ to "
+                 rf"$p_1 = {_vec(self.p1)}$."]
+        steps += _ends_on_side(self.p0, self.p1, lo, hi)
+        steps += [_pass_words(k, step, lo, hi) for k, step in enumerate(passes, 1)]
+        answer = np.array([[float(v) for v in e] for e in ends])
+        steps.append(rf"What remains runs from ${latex_vector(answer[0])}$ to "
+                     rf"${latex_vector(answer[1])}$.")
+        return Worked(steps, answer)
+
     def statement(self):
         return (
             _clip_words(self) + rf". Clip the segment from $p_0 = {_vec(self.p0)}$ to "
@@ -458,14 +765,18 @@ class CohenSutherlandClip(_Listed):
             r"first). " + DECIMALS + "\n\n" + data_note("box_min", "box_max", "p0", "p1"))
 
 
-class CohenSutherlandIntersections(DrawnExercise):
+class CohenSutherlandIntersections(_Boundary, DrawnExercise):
     r"""How many intersections Cohen-Sutherland computes for one segment.
 
     Each pass computes both outcodes; unless it accepts or rejects, it moves one outside end
     point (:math:`p_0` first while it is outside) to the side of its lowest set bit. The answer
-    is the number of such moves.
+    is the number of such moves, a whole number (1 to 4), compared exactly.
 
-    Attributes: ``box_min``, ``box_max``, ``p0``, ``p1``.
+    In about 15 % of the seeds the variant is a boundary case on purpose, named by
+    ``boundary``: an end point on the line of a side (``"point on a side"``), or a segment
+    through a corner, where one cut clears two bits (``"through a corner"``); None otherwise.
+
+    Attributes: ``box_min``, ``box_max``, ``p0``, ``p1``, ``boundary``.
 
     Examples
     --------
@@ -483,13 +794,36 @@ class CohenSutherlandIntersections(DrawnExercise):
     def draw(self, rng):
         self.box_min, self.box_max = _draw_box_2d(rng)
         lo, hi = self.box_min, self.box_max
-        self.p0, self.p1 = (_corner_biased_point(rng, lo, hi) for _ in range(2))
+        self.p0, self.p1 = _boundary_segment(rng, lo, hi, self._wanted,
+                                             point=lambda: _corner_biased_point(rng, lo, hi))
         self._steps = [] if np.array_equal(self.p0, self.p1) else \
             clipping.cohen_sutherland_steps(self.p0, self.p1, lo, hi)[1]
-        self.expected = float(sum(s["action"] == "clip" for s in self._steps))
+        self.expected = sum(s["action"] == "clip" for s in self._steps)
+        # segments whose number of set bits tells nothing apart (it equals the answer, the
+        # answer + 1 or the outside end points) are most of the random ones: keep only a share
+        self._plain_kept = bool(rng.random() < self.PLAIN_SHARE)
+
+    #: The share of the drawn segments kept although counting the bits would give the same
+    #: number as the answer or as another slip.
+    PLAIN_SHARE = 0.3
+
+    def _telling(self):
+        """Whether counting the set bits gives a wrong answer of its own (see mistakes)."""
+        c0, c1 = self._steps[0]["code0"], self._steps[0]["code1"]
+        bits = bin(c0).count("1") + bin(c1).count("1")
+        return bits not in (self.expected, self.expected + 1, bool(c0) + bool(c1))
+
+    boundary_kinds = (ON_SIDE, THROUGH_CORNER)
+
+    def boundary_cases(self):
+        return [c for c in _segment_cases(self.p0, self.p1, self.box_min, self.box_max)
+                if c in self.boundary_kinds]
 
     def acceptable(self):
-        return self.expected >= 1 and self._steps[-1]["action"] in ("accept", "reject")
+        return (self.expected >= 1 and self._steps[-1]["action"] in ("accept", "reject")
+                and (self._plain_kept or self._telling())
+                and _exact_enough(self._steps, self.box_min, self.box_max)
+                and self.boundary_fits())
 
     def mistakes(self):
         c0, c1 = self._steps[0]["code0"], self._steps[0]["code1"]
@@ -497,11 +831,11 @@ class CohenSutherlandIntersections(DrawnExercise):
             Mistake(self.expected + 1, r"You counted the passes of the loop, including the "
                     r"last one, which only tests (accepts or rejects) and computes no "
                     r"intersection.", "counted the final test"),
-            Mistake(float(bool(c0)) + float(bool(c1)), r"It is not one intersection per "
+            Mistake(int(bool(c0)) + int(bool(c1)), r"It is not one intersection per "
                     r"outside end point: an end point in a corner region may need two (the "
                     r"first cut can land outside the rectangle, beyond the other side), and a "
                     r"segment can also be rejected after a cut.", "one per endpoint"),
-            Mistake(float(bin(c0).count("1") + bin(c1).count("1")), r"It is not one "
+            Mistake(bin(c0).count("1") + bin(c1).count("1"), r"It is not one "
                     r"intersection per set bit: after a cut the codes are computed afresh, and "
                     r"a cut can clear two bits at once (or the segment is rejected before every "
                     r"bit is used).", "one per bit"),
@@ -513,14 +847,45 @@ class CohenSutherlandIntersections(DrawnExercise):
     def keep(self, mistakes):
         return _distinct_only(self.expected, mistakes)
 
-    def _check(self, answer):
-        fb = super()._check(answer)
+    def _judge(self, answer):
+        fb = _one_whole(super()._judge(answer), self.what,
+                        r"Off by one: follow the passes again. Each pass that neither accepts "
+                        r"nor rejects computes exactly one intersection; the last pass, which "
+                        r"accepts or rejects, computes none.")
         if fb.diagnosis == "value differs":
             fb = Feedback("wrong", r"Not that number. Follow the algorithm pass by pass: "
                           r"compute both outcodes; if $c_0 \lor c_1 = 0$ accept, if "
                           r"$c_0 \land c_1 \ne 0$ reject, otherwise cut once (and count it) and "
                           r"start the next pass with the new end point.", "value differs")
         return fb
+
+    def hints(self):
+        _, passes = _passes_by_hand(self.p0, self.p1, self.box_min, self.box_max)
+        first = passes[0]
+        return [
+            r"Each pass of Cohen-Sutherland computes both outcodes and then accepts, rejects, "
+            r"or computes **one** intersection (it moves one outside end point onto the line "
+            r"of a side). Count the passes that cut.",
+            r"Move $p_0$ while it is outside, otherwise $p_1$, to the side of the lowest set bit "
+            r"of its code; compute the new code and start the next pass. Stop at accept "
+            r"($c_0 \lor c_1 = 0$) or reject ($c_0 \land c_1 \ne 0$).",
+            rf"First pass: $c_0 = {_bits(first['codes'][0], 2)}$, "
+            rf"$c_1 = {_bits(first['codes'][1], 2)}$, so the first cut is with the "
+            rf"{first['side']} side and moves $p_{first['end']}$ to "
+            rf"${_vec_exact(first['point'])}$.",
+        ]
+
+    def worked(self):
+        lo, hi = self.box_min, self.box_max
+        _, passes = _passes_by_hand(self.p0, self.p1, lo, hi)
+        steps = [_clip_words(self) + rf"; the segment runs from $p_0 = {_vec(self.p0)}$ to "
+                 rf"$p_1 = {_vec(self.p1)}$."]
+        steps += _ends_on_side(self.p0, self.p1, lo, hi)
+        steps += [_pass_words(k, step, lo, hi) for k, step in enumerate(passes, 1)]
+        cuts = sum(step["action"] == "clip" for step in passes)
+        steps.append(rf"{len(passes)} passes, of which the last only tests: **{cuts}** "
+                     r"intersections.")
+        return Worked(steps, cuts)
 
     def statement(self):
         return (
@@ -535,7 +900,8 @@ class CohenSutherlandIntersections(DrawnExercise):
 
 
 def _corner_biased_point(rng, lo, hi):
-    """A whole point that is often in a corner region (beyond two sides) of the rectangle."""
+    """A whole point that is often in a corner region (beyond two sides) of the rectangle, and
+    never on the line of a side."""
     point = []
     for low, high in zip(lo, hi):
         where = pick(rng, ("below", "inside", "above", "below", "above"))
@@ -543,8 +909,8 @@ def _corner_biased_point(rng, lo, hi):
             point.append(float(rng.integers(low - 3, low)))
         elif where == "above":
             point.append(float(rng.integers(high + 1, high + 4)))
-        else:
-            point.append(float(rng.integers(low, high + 1)))
+        else:                                           # strictly inside: no side's line
+            point.append(float(rng.integers(low + 1, high)))
     return np.array(point)
 
 

@@ -5,7 +5,7 @@ Part of :mod:`course_lib.exercises.ch05`, which imports every exercise from here
 
 import numpy as np
 
-from ..core import UNANSWERED, Feedback, Mistake, data_note, read_floats
+from ..core import UNANSWERED, Feedback, Mistake, Worked, data_note, pick, read_floats
 from . import _Listed, _num, _set_feedback, _unanswered
 
 __all__ = [
@@ -15,12 +15,17 @@ __all__ = [
 
 
 def _read_order(answer, n):
+    """The answer as a list of n whole numbers (``2.0`` is 2), or a Feedback saying why not."""
     if _unanswered(answer):
         return Feedback("unanswered", UNANSWERED)
+    form = f"Give the order as a list of the {n} polygon numbers 0 to {n - 1}, each once."
+    if isinstance(answer, (list, tuple)) and any(isinstance(a, (bool, np.bool_))
+                                                 for a in answer):
+        return Feedback("invalid", form, "unreadable")
     value = read_floats(answer)
-    if value is None or value.shape != (n,) or sorted(value.tolist()) != list(range(n)):
-        return Feedback("invalid", f"Give the order as a list of the {n} polygon numbers "
-                        f"0 to {n - 1}, each once.", "unreadable")
+    if value is None or value.shape != (n,) or value.dtype == bool \
+            or not np.all(value == np.round(value)):
+        return Feedback("invalid", form, "unreadable")
     return [int(v) for v in value]
 
 
@@ -28,7 +33,8 @@ class PaintersOrder(_Listed):
     r"""The painter's (depth-sort) drawing order: the farthest polygon first.
 
     Each polygon is keyed by its farthest vertex (the smallest :math:`z_e`, the eye looking down
-    :math:`-z_e`) and the polygons are drawn from the farthest to the nearest.
+    :math:`-z_e`) and the polygons are drawn from the farthest to the nearest. Four or five
+    polygons; the answer is their numbers (whole numbers, ``2.0`` reads as 2) in drawing order.
 
     Attributes: ``depths`` (per polygon, the :math:`z_e` of its vertices).
 
@@ -45,8 +51,9 @@ class PaintersOrder(_Listed):
     answer_form = "custom"
 
     def draw(self, rng):
+        count = int(pick(rng, (4, 5)))
         self.depths = [-np.sort(rng.choice(np.arange(1, 16), size=3, replace=False))[::-1]
-                       .astype(float) for _ in range(4)]
+                       .astype(float) for _ in range(count)]
         farthest = [d.min() for d in self.depths]
         self.expected = [int(i) for i in np.argsort(farthest, kind="stable")]
 
@@ -83,7 +90,8 @@ class PaintersOrder(_Listed):
         return len(set(values)) == len(values)
 
     def _check(self, answer):
-        order = _read_order(answer, len(self.depths))
+        n = len(self.depths)
+        order = _read_order(answer, n)
         if isinstance(order, Feedback):
             return order
         if order == self.expected:
@@ -91,6 +99,14 @@ class PaintersOrder(_Listed):
         for mistake in self._mistakes:
             if order == mistake.value:
                 return Feedback("wrong", mistake.explanation, mistake.key)
+        if order == [k + 1 for k in self.expected]:
+            return Feedback("wrong", rf"Right order, but the polygons are numbered from **0** "
+                            rf"to {n - 1}, as in the table.", "counted from 1")
+        if sorted(order) != list(range(n)):
+            missing = sorted(set(range(n)) - set(order))
+            return Feedback("wrong", rf"Every polygon is drawn exactly once: the order lists each "
+                            rf"of the numbers 0 to {n - 1} once, and yours lacks "
+                            + ", ".join(str(k) for k in missing) + ".", "not a permutation")
         return Feedback("wrong", r"Not the depth-sort order. For each polygon find its "
                         r"farthest vertex (smallest $z_e$); draw the polygon whose farthest "
                         r"vertex is farthest first.", "order differs")
@@ -98,14 +114,40 @@ class PaintersOrder(_Listed):
     def statement(self):
         rows = "\n".join(rf"| {k} | " + ", ".join(_num(z) for z in d) + " |"
                          for k, d in enumerate(self.depths))
+        n = len(self.depths)
         return (
-            r"Four polygons are to be drawn with the painter's algorithm (depth sort). The eye "
+            rf"{['Four', 'Five'][n - 4]} polygons are to be drawn with the painter's algorithm "
+            r"(depth sort). The eye "
             r"looks down $-z_e$; the $z_e$ coordinates of each polygon's vertices are:" "\n\n"
             "| polygon | $z_e$ of its vertices |\n|---|---|\n" + rows + "\n\n"
             r"Each polygon is keyed by its **farthest** vertex, and the polygons are drawn from "
             r"the farthest to the nearest. In which order are they drawn?" "\n\n"
-            r"**Answer:** the list of the 4 polygon numbers in drawing order, e.g. "
-            r"`[2, 0, 3, 1]`." "\n\n" + data_note("depths"))
+            rf"**Answer:** the list of the {n} polygon numbers in drawing order, e.g. "
+            + ("`[2, 0, 3, 1]`." if n == 4 else "`[2, 0, 4, 3, 1]`.") + "\n\n"
+            + data_note("depths"))
+
+    def hints(self):
+        keys = ", ".join(rf"polygon {k}: ${_num(d.min())}$" for k, d in enumerate(self.depths))
+        return [
+            r"Depth sort paints the background first: key each polygon by its **farthest** "
+            r"vertex and draw from the farthest polygon to the nearest.",
+            r"The eye looks down $-z_e$, so the farthest vertex of a polygon is the one with "
+            r"the smallest (most negative) $z_e$. Sort the polygons by that key, smallest "
+            r"first.",
+            rf"The keys (the smallest $z_e$ of each polygon) are {keys}.",
+        ]
+
+    def worked(self):
+        keys = [min(float(z) for z in d) for d in self.depths]
+        order = sorted(range(len(keys)), key=lambda k: keys[k])
+        return Worked([
+            r"The eye looks down $-z_e$: the farthest vertex of a polygon has the smallest "
+            r"$z_e$. The keys: " + ", ".join(rf"polygon {k}: $\min(" + ", ".join(
+                _num(z) for z in d) + rf") = {_num(key)}$" for k, (d, key)
+                in enumerate(zip(self.depths, keys))) + ".",
+            r"Sorted from the farthest (smallest key) to the nearest: "
+            + ", ".join(rf"{k} (${_num(keys[k])}$)" for k in order) + ".",
+        ], order)
 
 
 _STRIP = 8
@@ -208,6 +250,57 @@ class PainterFailure(_Listed):
                              "At each pixel compare the segment painted last with the nearest "
                              "segment there.",
                              "The painter's picture is wrong at exactly these pixels.")
+
+    def _by_hand(self):
+        """The painting order, and per pixel the segments covering it with their depths."""
+        far = [max(s[1], s[3]) for s in self.segments]
+        order = sorted(range(len(far)), key=lambda k: -far[k])
+        pixels = []
+        for i in range(_STRIP):
+            x = i + 0.5
+            here = {}
+            for k, (x0, d0, x1, d1) in enumerate(self.segments):
+                if min(x0, x1) < x < max(x0, x1):
+                    here[k] = d0 + (d1 - d0) * (x - x0) / (x1 - x0)
+            pixels.append(here)
+        return far, order, pixels
+
+    def hints(self):
+        far, order, pixels = self._by_hand()
+        shared = [i for i, here in enumerate(pixels) if len(here) > 1]
+        return [
+            r"The painter's picture shows, at each pixel, the segment painted **last** among "
+            r"those covering it; the true picture shows the **nearest** one. They differ where "
+            r"a segment painted earlier is nearer.",
+            r"Sort the segments by their farthest end point (the largest depth) and paint the "
+            r"farthest first. Then, at each pixel covered by two or more segments, interpolate "
+            r"their depths at $x = i + 0.5$ and compare.",
+            r"The painting order is " + ", ".join(str(k) for k in order)
+            + r"; the pixels covered by more than one segment are "
+            + ", ".join(str(i) for i in shared) + ".",
+        ]
+
+    def worked(self):
+        far, order, pixels = self._by_hand()
+        steps = [r"Farthest end points: " + ", ".join(
+            rf"segment {k}: ${_num(f)}$" for k, f in enumerate(far)) + r"; painted in the "
+            r"order " + ", ".join(str(k) for k in order) + "."]
+        wrong = []
+        for i, here in enumerate(pixels):
+            if len(here) < 2:
+                continue
+            last = [k for k in order if k in here][-1]
+            nearest = min(here, key=here.get)
+            depths = ", ".join(rf"{k} at ${_num(z)}$" for k, z in sorted(here.items()))
+            verdict = ("right" if last == nearest else
+                       rf"**wrong** (segment {nearest} is nearer)")
+            steps.append(rf"Pixel {i} ($x = {_num(i + 0.5)}$): {depths}; painted last: "
+                         rf"{last}: {verdict}.")
+            if last != nearest:
+                wrong.append(i)
+        steps.append(r"Pixels covered by one segment or none are always right. The painter "
+                     r"is wrong at the pixels " + ", ".join(str(i) for i in wrong) + ".")
+        return Worked(steps, wrong)
 
     def statement(self):
         rows = "\n".join(rf"| {k} | $({_num(x0)}, {_num(d0)})$ | $({_num(x1)}, {_num(d1)})$ |"

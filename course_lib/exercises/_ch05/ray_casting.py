@@ -5,7 +5,8 @@ Part of :mod:`course_lib.exercises.ch05`, which imports every exercise from here
 
 import numpy as np
 
-from ..core import DrawnExercise, Mistake, data_note, diagnose_parts, parts_separated, pick
+from ..core import (DrawnExercise, Mistake, Worked, data_note, diagnose_parts, parts_separated,
+                    pick)
 
 __all__ = [
     "RayCastingCount",
@@ -18,6 +19,7 @@ class RayCastingCount(DrawnExercise):
     Brute force tests every ray against every triangle: :math:`p \cdot \sum P_i`. With one
     bounding sphere per object, every ray is tested against every sphere (:math:`p \cdot m`)
     and only the :math:`k_i` rays that hit sphere :math:`i` against its :math:`P_i` triangles.
+    The three counts are whole numbers, compared exactly (one test short is off by one).
 
     Attributes: ``width``, ``height``, ``triangles`` (:math:`P_i`), ``hits`` (:math:`k_i`).
 
@@ -41,12 +43,12 @@ class RayCastingCount(DrawnExercise):
         self.triangles = [int(pick(rng, (200, 500, 1000, 2000))) for _ in range(m)]
         pixels = self.width * self.height
         self.hits = [int(rng.integers(3, 31)) * pixels // 100 for _ in range(m)]
-        self.expected = np.array([float(pixels * sum(self.triangles)),
-                                  float(sum(k * t for k, t in zip(self.hits, self.triangles))),
-                                  float(pixels * m)])
+        self.expected = np.array([pixels * sum(self.triangles),
+                                  sum(k * t for k, t in zip(self.hits, self.triangles)),
+                                  pixels * m])
 
     def _parts(self):
-        brute, with_bv, spheres = self.expected
+        brute, with_bv, spheres = (int(v) for v in self.expected)
         pixels = self.width * self.height
         return [
             ("the tests without bounding volumes", brute, [
@@ -82,6 +84,41 @@ class RayCastingCount(DrawnExercise):
                               "`[without_bv, ray_triangle_with_bv, ray_sphere]`.",
                               r"Count tests per ray and multiply by the number of rays "
                               r"$p = w \cdot h$.")
+
+    def hints(self):
+        p, m = self.width * self.height, len(self.triangles)
+        terms = " + ".join(rf"{k} \cdot {t}" for k, t in zip(self.hits, self.triangles))
+        return [
+            r"Count the tests one ray makes, then multiply by the number of rays: one per "
+            r"pixel, $p = w \cdot h$.",
+            r"Brute force tests every ray against every triangle: $p \sum_i P_i$. With "
+            r"bounding spheres every ray is tested against each of the $m$ spheres "
+            r"($p \cdot m$ ray-sphere tests), and only the $k_i$ rays that hit sphere $i$ are "
+            r"tested against its $P_i$ triangles: $\sum_i k_i P_i$.",
+            rf"Here $p = {self.width} \cdot {self.height} = {p}$, "
+            rf"$\sum_i P_i = {sum(self.triangles)}$, $m = {m}$, and "
+            rf"$\sum_i k_i P_i = {terms}$.",
+        ]
+
+    def worked(self):
+        p = self.width * self.height
+        total = sum(self.triangles)
+        brute = p * total
+        products = [k * t for k, t in zip(self.hits, self.triangles)]
+        with_bv = sum(products)
+        spheres = p * len(self.triangles)
+        return Worked([
+            rf"One ray per pixel: $p = {self.width} \cdot {self.height} = {p}$ rays.",
+            rf"(a) Brute force: every ray against all "
+            rf"$\sum_i P_i = {' + '.join(str(t) for t in self.triangles)} = {total}$ "
+            rf"triangles: ${p} \cdot {total} = {brute}$ tests.",
+            r"(b) With bounding spheres, object $i$'s triangles are tested only by the "
+            r"$k_i$ rays that hit its sphere: $\sum_i k_i P_i = "
+            + " + ".join(rf"{k} \cdot {t}" for k, t in zip(self.hits, self.triangles))
+            + " = " + " + ".join(str(v) for v in products) + rf" = {with_bv}$.",
+            rf"(c) Every ray is tested against each of the {len(self.triangles)} spheres: "
+            rf"${p} \cdot {len(self.triangles)} = {spheres}$ ray-sphere tests.",
+        ], [brute, with_bv, spheres])
 
     def statement(self):
         rows = "\n".join(f"| {i} | {t} | {k} |"

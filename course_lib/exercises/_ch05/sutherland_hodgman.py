@@ -6,8 +6,9 @@ Part of :mod:`course_lib.exercises.ch05`, which imports every exercise from here
 import numpy as np
 
 from ... import clipping
-from ..core import (DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, data_note,
-                    diagnose_parts, parts_separated, pick, read_floats)
+from ..core import (DECIMALS, UNANSWERED, DrawnExercise, Feedback, Mistake, Worked, data_note,
+                    diagnose_parts, latex_fraction, latex_vector, parts_separated, pick,
+                    read_floats)
 from . import (_box_words, _cross2, _cyclic_match, _draw_box_2d, _ints_between, _num, _shoelace,
                _unanswered, _vec)
 
@@ -26,6 +27,55 @@ def _side_plane(side, value):
     normal = np.zeros(2)
     normal[axis] = 1.0 if upper else -1.0
     return normal, (value if upper else -value)
+
+
+def _inside_words(side, value):
+    axis, upper = _SIDE_PLANES[side]
+    relation = r"\le" if upper else r"\ge"
+    return rf"${'xy'[axis]} {relation} {_num(value)}$"
+
+
+def _clip_by_hand(polygon, side, value, names=None):
+    """One stage of Sutherland-Hodgman worked by hand: (the output vertices, one step per edge).
+
+    `names` are the vertices' names in the text (``v_0``, ...); by default their coordinates.
+    """
+    axis, upper = _SIDE_PLANES[side]
+    polygon = [np.asarray(p, dtype=float) for p in polygon]
+    n = len(polygon)
+    names = names or [latex_vector(p) for p in polygon]
+
+    def inside(p):
+        return p[axis] <= value if upper else p[axis] >= value
+
+    out, lines = [], []
+    for i in range(n):
+        S, E = polygon[i], polygon[(i + 1) % n]
+        s_in, e_in = inside(S), inside(E)
+        edge = rf"${names[i]} \to {names[(i + 1) % n]}$"
+        if s_in != e_in:
+            t = (value - S[axis]) / (E[axis] - S[axis])
+            hit = S + t * (E - S)
+            hit[axis] = value
+            crossing = (rf"crosses ${'xy'[axis]} = {_num(value)}$ at "
+                        rf"$t = {latex_fraction(t)}$, $I = {latex_vector(hit)}$")
+        if s_in and e_in:
+            out.append(E)
+            lines.append(rf"{edge}: in $\to$ in, output $E = {latex_vector(E)}$.")
+        elif s_in:
+            out.append(hit)
+            lines.append(rf"{edge}: in $\to$ out, {crossing}: output $I$.")
+        elif e_in:
+            out.extend([hit, E])
+            lines.append(rf"{edge}: out $\to$ in, {crossing}: output $I$, then "
+                         rf"$E = {latex_vector(E)}$.")
+        else:
+            lines.append(rf"{edge}: out $\to$ out, nothing.")
+    return out, lines
+
+
+def _polygon_words(points):
+    return ", ".join(f"${latex_vector(p)}$" for p in points)
 
 
 def _read_polygon(answer):
@@ -158,6 +208,34 @@ class SutherlandHodgmanOneSide(DrawnExercise):
                         "edge in order, including the closing edge from the last vertex back to "
                         "the first.", "vertices differ")
 
+    def hints(self):
+        inside = self._inside()
+        n = len(self.polygon)
+        ins = ", ".join(f"$v_{i}$" for i in range(n) if inside[i])
+        crossing = " and ".join(rf"$v_{i} \to v_{(i + 1) % n}$" for i in range(n)
+                                if inside[i] != inside[(i + 1) % n])
+        return [
+            r"Sutherland-Hodgman walks the edges $S \to E$ in order (the last one back to the "
+            r"first) and outputs, per edge: in $\to$ in: $E$; in $\to$ out: the intersection "
+            r"$I$; out $\to$ in: $I$, then $E$; out $\to$ out: nothing.",
+            rf"Inside is {_inside_words(self.side, self.value)}. Classify each vertex; on an "
+            r"edge that crosses the line, $I = S + t\,(E - S)$ with $t$ chosen so that $I$ "
+            r"lies on the line.",
+            rf"Inside: {ins}; the edges that cross the line are {crossing}.",
+        ]
+
+    def worked(self):
+        n = len(self.polygon)
+        out, lines = _clip_by_hand(self.polygon, self.side, self.value,
+                                   names=[f"v_{i}" for i in range(n)])
+        steps = [rf"Inside is {_inside_words(self.side, self.value)}; the vertices: "
+                 + ", ".join(rf"$v_{i} = {_vec(p)}$ ({'in' if ok else 'out'})"
+                             for i, (p, ok) in enumerate(zip(self.polygon, self._inside())))
+                 + "."]
+        steps += lines
+        steps.append(rf"The output, in order: {_polygon_words(out)}.")
+        return Worked(steps, np.array(out))
+
     def statement(self):
         axis, upper = _SIDE_PLANES[self.side]
         relation = r"\le" if upper else r"\ge"
@@ -233,7 +311,7 @@ class SutherlandHodgmanArea(DrawnExercise):
             == len(self.clipped)
 
     def _parts(self):
-        n, area = self.expected
+        n, area = int(self.expected[0]), float(self.expected[1])
         keep = np.delete(self.clipped, self._corners(), axis=0)
         without = Mistake(_shoelace(keep), r"The rectangle's corner is missing. Where the "
                           r"triangle covers a corner of the clip rectangle, the clipped polygon "
@@ -263,6 +341,43 @@ class SutherlandHodgmanArea(DrawnExercise):
                               "`[number_of_vertices, area]`.",
                               "Clip by one side at a time, then compute the area of the final "
                               "polygon with the shoelace formula.")
+
+    def _stages(self):
+        lo, hi = self.box_min, self.box_max
+        return (("left", lo[0]), ("right", hi[0]), ("bottom", lo[1]), ("top", hi[1]))
+
+    def hints(self):
+        corners = ", ".join(f"${latex_vector(self.clipped[i])}$" for i in self._corners())
+        return [
+            r"Clip the triangle against the four sides one after the other (left, right, "
+            r"bottom, top); each stage applies the four rules of Sutherland-Hodgman to the "
+            r"polygon the previous stage gave.",
+            r"Where the triangle covers a corner of the rectangle, the clipped polygon runs "
+            r"along two sides and turns at the corner, which becomes a vertex. The area of "
+            r"the final polygon: $A = \frac{1}{2}\left|\sum_i (x_i y_{i+1} - x_{i+1} y_i)"
+            r"\right|$.",
+            rf"The rectangle's corner {corners} lies inside the triangle and is a vertex of "
+            r"the clipped polygon.",
+        ]
+
+    def worked(self):
+        polygon = [np.asarray(p, dtype=float) for p in self.triangle]
+        steps = []
+        for side, value in self._stages():
+            polygon, lines = _clip_by_hand(polygon, side, value)
+            steps.append(rf"Against the {side} side (inside "
+                         rf"{_inside_words(side, value)}): " + " ".join(lines)
+                         + rf" Result: {_polygon_words(polygon)}.")
+        n = len(polygon)
+        terms = [polygon[i][0] * polygon[(i + 1) % n][1] - polygon[(i + 1) % n][0]
+                 * polygon[i][1] for i in range(n)]
+        area = abs(sum(terms)) / 2
+        steps.append(rf"The clipped polygon has {n} vertices. Shoelace: the terms "
+                     r"$x_i y_{i+1} - x_{i+1} y_i$ are "
+                     + ", ".join(f"${latex_fraction(t)}$" for t in terms)
+                     + rf"; their sum is ${latex_fraction(sum(terms))}$, so "
+                     rf"$A = {latex_fraction(area)} \approx {_num(area, 4)}$.")
+        return Worked(steps, [n, area])
 
     def statement(self):
         return (

@@ -5,8 +5,10 @@ Part of :mod:`course_lib.exercises.ch05`, which imports every exercise from here
 
 import numpy as np
 
-from ..core import UNANSWERED, DrawnExercise, Feedback, Mistake, data_note, pick, read_floats
-from . import _cross2, _num, _unanswered
+from ... import format as fmt
+from ..core import (UNANSWERED, DrawnExercise, Feedback, Mistake, Worked, data_note, pick,
+                    read_floats)
+from . import _cross2, _num, _one_whole, _unanswered
 
 __all__ = [
     "ZBufferIds",
@@ -83,6 +85,54 @@ def _draw_scene(rng, count):
             return triangles
 
 
+def _cover_by_hand(triangle):
+    """{(i, j): depth} of the pixel centres inside `triangle`, as a student computes them.
+
+    The barycentric coordinates of a centre P are the areas of the triangles P V1 V2, P V2 V0
+    (and the rest) over the area of V0 V1 V2, written out as cross products; P is inside when
+    all three are >= 0, and its depth is the weighted sum of the vertices' depths. (The worked
+    solutions' own computation.)
+    """
+    (x0, y0, z0), (x1, y1, z1), (x2, y2, z2) = (tuple(float(v) for v in row)
+                                                 for row in triangle)
+    area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
+    covered = {}
+    for j in range(_GRID):
+        for i in range(_GRID):
+            x, y = i + 0.5, j + 0.5
+            l0 = ((x1 - x) * (y2 - y) - (x2 - x) * (y1 - y)) / area
+            l1 = ((x2 - x) * (y0 - y) - (x0 - x) * (y2 - y)) / area
+            l2 = 1 - l0 - l1
+            if min(l0, l1, l2) >= 0:
+                covered[(i, j)] = l0 * z0 + l1 * z1 + l2 * z2
+    return covered
+
+
+def _coverage_words(k, covered):
+    return (rf"Triangle {k} covers {len(covered)} pixel centres; the depths there are "
+            + ", ".join(rf"$({i}, {j})$: {_num(z)}" for (i, j), z in sorted(covered.items()))
+            + ".")
+
+
+def _overlaps(covers):
+    """{pixel: [(triangle, depth)]} for the pixels that two or more triangles cover."""
+    table = {}
+    for k, covered in enumerate(covers):
+        for pixel, z in covered.items():
+            table.setdefault(pixel, []).append((k, z))
+    return {pixel: here for pixel, here in sorted(table.items()) if len(here) > 1}
+
+
+def _counts_words(covers):
+    first, *rest = [len(c) for c in covers]
+    return (f"Triangle 0 covers {first} pixel centres, "
+            + ", ".join(f"triangle {k} {n}" for k, n in enumerate(rest, 1)))
+
+
+def _pixels_words(pixels):
+    return ", ".join(f"$({i}, {j})$" for i, j in pixels) or "none"
+
+
 def _scene_table(triangles):
     rows = []
     for k, tri in enumerate(triangles):
@@ -140,7 +190,42 @@ class ZBufferIds(DrawnExercise):
                     "rows upside down"),
             Mistake(e.T, r"Rows and columns are swapped: `ids[j][i]` holds pixel $(i, j)$, so "
                     r"each row of the array is one value of $y$.", "transposed"),
+            Mistake(np.where(e >= 0, e + 1, -1), r"The triangles are numbered from **0** (the "
+                    r"first one drawn is triangle 0), and the background is $-1$.",
+                    "numbered from 1"),
         ]
+
+    def hints(self):
+        covers = [_cover_by_hand(t) for t in self.triangles]
+        return [
+            r"At each pixel the id buffer ends with the triangle that is **nearest** (smallest "
+            r"depth) among those covering the pixel centre, and $-1$ where none does.",
+            r"For each triangle find the pixel centres $(i + 0.5, j + 0.5)$ inside it (all "
+            r"three barycentric coordinates $\ge 0$) and its depth there, "
+            r"$\lambda_0 z_0 + \lambda_1 z_1 + \lambda_2 z_2$; where triangles overlap, "
+            r"compare their depths.",
+            rf"{_counts_words(covers)}; they overlap at {_pixels_words(_overlaps(covers))}.",
+        ]
+
+    def worked(self):
+        covers = [_cover_by_hand(t) for t in self.triangles]
+        steps = [_coverage_words(k, c) for k, c in enumerate(covers)]
+        ids = -np.ones((_GRID, _GRID), dtype=int)
+        nearest = np.ones((_GRID, _GRID))             # the far plane
+        for k, covered in enumerate(covers):
+            for (i, j), z in covered.items():
+                if z < nearest[j, i]:
+                    ids[j, i], nearest[j, i] = k, z
+        overlaps = _overlaps(covers)
+        if overlaps:
+            steps.append(r"Where triangles overlap the smaller depth wins: "
+                         + "; ".join(rf"$({i}, {j})$: " + ", ".join(
+                             f"{k} at {_num(z)}" for k, z in here) + rf" $\Rightarrow$ "
+                             rf"{min(here, key=lambda kz: kz[1])[0]}"
+                             for (i, j), here in overlaps.items()) + ".")
+        steps.append(r"The id buffer, row $j = 0$ (the bottom of the picture) first: "
+                     rf"${fmt.matrix_latex(ids, 0)}$.")
+        return Worked(steps, ids)
 
     def _check(self, answer):
         if _unanswered(answer):
@@ -193,9 +278,9 @@ class ZBufferWrites(DrawnExercise):
         self.triangles = _draw_scene(rng, 3)
         fragments = _fragments(self.triangles)
         ids, _, writes = _zbuffer(fragments)
-        self.total_fragments = float(sum(len(f) for f in fragments))
-        self.visible_pixels = float(np.count_nonzero(ids >= 0))
-        self.expected = float(writes)
+        self.total_fragments = sum(len(f) for f in fragments)
+        self.visible_pixels = int(np.count_nonzero(ids >= 0))
+        self.expected = writes
 
     def mistakes(self):
         return [
@@ -210,6 +295,46 @@ class ZBufferWrites(DrawnExercise):
                     r"**fail** the depth test; the question asks for those that pass it (and "
                     r"are written).", "counted the failures"),
         ]
+
+    def _judge(self, answer):
+        return _one_whole(super()._judge(answer), self.what,
+                          r"Off by one: go through the fragments once more, triangle by "
+                          r"triangle; a fragment is written when its depth is **less** than "
+                          r"the one stored at that moment.")
+
+    def hints(self):
+        covers = [_cover_by_hand(t) for t in self.triangles]
+        return [
+            r"A fragment is written when its depth is less than the one stored at that "
+            r"moment. The drawing order matters, and a pixel can be written more than once.",
+            r"The first triangle's fragments are all written (the buffer holds 1 everywhere). "
+            r"For each later triangle compare, at each of its pixels, with the depth the "
+            r"triangles before it left there.",
+            rf"{_counts_words(covers)} ({sum(len(c) for c in covers)} fragments); they "
+            rf"overlap at {_pixels_words(_overlaps(covers))}.",
+        ]
+
+    def worked(self):
+        covers = [_cover_by_hand(t) for t in self.triangles]
+        steps = [_coverage_words(k, c) for k, c in enumerate(covers)]
+        stored, writes = {}, 0
+        for k, covered in enumerate(covers):
+            passed, failed = [], []
+            for pixel, z in sorted(covered.items()):
+                if z < stored.get(pixel, 1.0):
+                    passed.append(pixel)
+                    stored[pixel] = z
+                else:
+                    failed.append((pixel, z))
+            writes += len(passed)
+            text = rf"Drawing triangle {k}: {len(passed)} of its {len(covered)} fragments pass"
+            if failed:
+                text += (" (it fails at " + ", ".join(
+                    rf"$({i}, {j})$, {_num(z)} against the stored {_num(stored[(i, j)])}"
+                    for (i, j), z in failed) + ")")
+            steps.append(text + ".")
+        steps.append(rf"In all {writes} writes.")
+        return Worked(steps, writes)
 
     def statement(self):
         return (

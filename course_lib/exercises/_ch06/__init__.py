@@ -17,8 +17,21 @@ from ..core import (UNANSWERED, DrawnExercise, Feedback, diagnose_parts, has_pla
 # Helpers
 # ---------------------------------------------------------------------------------------------
 
-def _read_ints(answer, n, form, low=None, high=None):
-    """A tuple of `n` whole numbers from the answer, or a Feedback saying why not."""
+def _read_ints(answer, n, form, low=None, high=None, noun="index"):
+    """A tuple of `n` whole numbers from the answer, or a Feedback saying why not.
+
+    ``5.0`` is the whole number 5; True, 5.5 and text are refused ("invalid"). A whole number
+    outside ``low..high`` is read, and wrong ("out of range"): it names no `noun` of the mesh.
+
+    Examples
+    --------
+    >>> _read_ints([2.0, 3], 2, "Two numbers.", 0, 5)
+    (2, 3)
+    >>> _read_ints([2.5, 3], 2, "Two numbers.").status, _read_ints([True, 3], 2, "").status
+    ('invalid', 'invalid')
+    >>> _read_ints([6, 3], 2, "Two numbers.", 0, 5).diagnosis
+    'out of range'
+    """
     if has_placeholder(answer, none_inside=True):
         return Feedback("unanswered", UNANSWERED)
     if isinstance(answer, (bool, np.bool_)):
@@ -34,10 +47,48 @@ def _read_ints(answer, n, form, low=None, high=None):
         return Feedback("invalid", "These are counts and indices: give whole numbers. " + form,
                         "unreadable")
     out = tuple(int(v) for v in values)
-    if low is not None and any(v < low or v > high for v in out):
-        return Feedback("invalid", f"Every number must lie between {low} and {high}. " + form,
-                        "unreadable")
-    return out
+    outside = _out_of_range(out, low, high, noun)      # a Feedback, which is False: no `or`
+    return out if outside is None else outside
+
+
+def _out_of_range(values, low, high, noun):
+    """A "wrong" Feedback naming a number of `values` outside ``low..high``, else None."""
+    if low is None:
+        return None
+    bad = [v for v in values if v < low or v > high]
+    if not bad:
+        return None
+    return Feedback("wrong", f"There is no {noun} {bad[0]} here: the {noun} numbers run from "
+                    f"{low} to {high} (counted from 0).", "out of range")
+
+
+def _one_whole(feedback, what, off_by_one):
+    """The verdict on one whole number, in the words of one number.
+
+    The core's whole-number diagnoses speak of components (of a vector); for a single count
+    the off-by-one verdict gets `off_by_one` and any other unexplained one says the number
+    differs (diagnosis ``"value differs"``, which the exercise's advice then follows).
+    """
+    if feedback.diagnosis == "off by one":
+        return Feedback("wrong", off_by_one, "off by one")
+    if feedback.diagnosis == "components differ":
+        return Feedback("wrong", f"{what[:1].upper() + what[1:]} should be different.",
+                        "value differs")
+    return feedback
+
+
+def _paren(x):
+    """A whole number as text, in parentheses when negative (to follow a minus sign)."""
+    return f"({x})" if x < 0 else str(x)
+
+
+def _cycle(face):
+    """The directed edges of a face, in its order: [(v0, v1), (v1, v2), ..., (vk, v0)]."""
+    return list(zip(face, face[1:] + face[:1]))
+
+
+def _face_latex(k, face):
+    return rf"$f_{{{k}}} = ({', '.join(str(v) for v in face)})$"
 
 
 def _faces_words(faces):
@@ -107,12 +158,17 @@ class _Record(DrawnExercise):
 
     ``self.expected`` is a tuple; ``mistakes()`` returns Mistakes whose values are tuples
     (``numeric=False``). ``fields`` names the numbers, for the feedback on an unexplained
-    answer.
+    answer. ``5.0`` reads as 5. An answer no slip explains is told, in this order: every entry
+    one too large ("counted from 1"), a number outside ``low..high`` ("out of range", naming
+    the ``noun``), the entries off by one ("off by one"), or which entries differ ("entries
+    differ", followed by the exercise's advice).
     """
 
     answer_form = "custom"
     fields = ()
     low, high = None, None
+    #: What the numbers are, for an answer out of ``low..high``.
+    noun = "index"
 
     def keep(self, mistakes):
         return [m for m in mistakes if m.value != self.expected]
@@ -127,7 +183,7 @@ class _Record(DrawnExercise):
         return True
 
     def _read(self, answer):
-        return _read_ints(answer, len(self.fields), self.form_hint, self.low, self.high)
+        return _read_ints(answer, len(self.fields), self.form_hint)
 
     def _judge(self, answer):
         value = self._read(answer)
@@ -139,5 +195,15 @@ class _Record(DrawnExercise):
             if value == mistake.value:
                 return Feedback("wrong", mistake.explanation, mistake.key)
         off = [name for name, a, b in zip(self.fields, value, self.expected) if a != b]
-        return Feedback("wrong", "Not right yet: " + ", ".join(off) + ". " + self.advice,
-                        "entries differ")
+        if all(a == b + 1 for a, b in zip(value, self.expected)):
+            return Feedback("wrong", "Every entry is one too large: the numbers here count from "
+                            "**0** (the first face, edge or vertex is number 0).",
+                            "counted from 1")
+        outside = _out_of_range(value, self.low, self.high, self.noun)
+        if outside is not None:
+            return outside
+        if all(abs(a - b) == 1 for a, b in zip(value, self.expected) if a != b):
+            return Feedback("wrong", "Off by one in " + ", ".join(off) + ": read the row "
+                            "again, and count from 0.", "off by one")
+        # the advice follows (DrawnExercise adds it to an unexplained verdict): not added here
+        return Feedback("wrong", "Not right yet: " + ", ".join(off) + ".", "entries differ")

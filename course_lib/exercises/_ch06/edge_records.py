@@ -6,8 +6,8 @@ Part of :mod:`course_lib.exercises.ch06`, which imports every exercise from here
 import numpy as np
 
 from ... import mesh
-from ..core import UNANSWERED, Feedback, Mistake, data_note, has_placeholder, pick
-from . import _faces_words, _Parts, _Record, _small_mesh
+from ..core import UNANSWERED, Feedback, Mistake, Worked, data_note, has_placeholder, pick
+from . import _face_latex, _faces_words, _Parts, _Record, _small_mesh
 
 __all__ = [
     "HalfEdgeWalk",
@@ -42,6 +42,7 @@ class WingedEdgeRecord(_Record):
 
     title = "Fill in a winged-edge record"
     fields = _WING_FIELDS
+    noun = "face or edge"
     form_hint = ("Give 6 whole numbers `[left_face, right_face, left_prev, left_next, "
                  "right_prev, right_next]`, or a dict with those keys.")
     advice = (r"Find the face that lists start then end (the left face) and the one that lists "
@@ -55,7 +56,7 @@ class WingedEdgeRecord(_Record):
         w = mesh.WingedEdgeMesh.from_faces(vertices, self.faces)
         self.edges = [tuple(int(x) for x in row) for row in w.edges()]
         self.e = int(rng.integers(len(self.edges)))
-        self.low, self.high = -1, len(self.edges) - 1
+        self.low, self.high = 0, len(self.edges) - 1
         record = w.records()[self.e]
         self.expected = tuple(int(record[k]) for k in _WING_FIELDS)
 
@@ -88,6 +89,51 @@ class WingedEdgeRecord(_Record):
                     r"other face: the left wings are the edges before and after $e$ around the "
                     r"left face.", "wings of the other face", numeric=False),
         ]
+
+    def _around(self, u, w):
+        """The face that walks u -> w, and the vertices just before u and just after w in it."""
+        for k, f in enumerate(self.faces):
+            n = len(f)
+            for i in range(n):
+                if f[i] == u and f[(i + 1) % n] == w:
+                    return k, f[i - 1], f[(i + 2) % n]
+        raise ValueError(f"no face walks {u} -> {w}")
+
+    def hints(self):
+        a, b = self.edges[self.e]
+        lf, _, _ = self._around(a, b)
+        rf, _, _ = self._around(b, a)
+        return [
+            r"The **left** face of an edge walks it from start to end (it lists the start "
+            r"vertex, then the end vertex); the **right** face walks it from end to start. "
+            r"*prev* and *next* are the edges just before and just after the edge on each "
+            r"face's counter-clockwise walk.",
+            rf"Find the face in which ${a}$ is followed by ${b}$ (cyclically) and the one in "
+            rf"which ${b}$ is followed by ${a}$. In each, read the vertex before and the vertex "
+            r"after the edge, and look the two neighbouring edges up in the edge list (their "
+            r"direction there does not matter).",
+            rf"The left face is {_face_latex(lf, self.faces[lf])} (it lists ${a}, {b}$) and "
+            rf"the right face {_face_latex(rf, self.faces[rf])} (it lists ${b}, {a}$).",
+        ]
+
+    def worked(self):
+        a, b = self.edges[self.e]
+        index = {frozenset(pair): k for k, pair in enumerate(self.edges)}
+        lf, x, y = self._around(a, b)
+        rf, u, w = self._around(b, a)
+        lp, ln = index[frozenset((x, a))], index[frozenset((b, y))]
+        rp, rn = index[frozenset((u, b))], index[frozenset((a, w))]
+        return Worked([
+            rf"$e_{{{self.e}}}$ runs from ${a}$ to ${b}$. The face that lists ${a}$ then ${b}$ "
+            rf"is its left face, {_face_latex(lf, self.faces[lf])}; the face that lists "
+            rf"${b}$ then ${a}$ is its right face, {_face_latex(rf, self.faces[rf])}.",
+            rf"Around $f_{{{lf}}}$: ${x} \to {a} \to {b} \to {y}$. Before the edge comes "
+            rf"$\{{{x}, {a}\}} = e_{{{lp}}}$ (left prev), after it "
+            rf"$\{{{b}, {y}\}} = e_{{{ln}}}$ (left next).",
+            rf"Around $f_{{{rf}}}$, which walks the edge from ${b}$ to ${a}$: "
+            rf"${u} \to {b} \to {a} \to {w}$. Before it comes $\{{{u}, {b}\}} = e_{{{rp}}}$ "
+            rf"(right prev), after it $\{{{a}, {w}\}} = e_{{{rn}}}$ (right next).",
+        ], [lf, rf, lp, ln, rp, rn])
 
     def statement(self):
         edges = ", ".join(rf"$e_{{{k}}}: {a} \to {b}$" for k, (a, b) in enumerate(self.edges))
@@ -153,7 +199,7 @@ class HalfEdgeWalk(_Parts):
         self.ops = ops
         self.h = int(rng.integers(self.table.n_half_edges))
         g = self._walk(ops)
-        self.expected = np.array([g, int(self.table.target[g])], dtype=float)
+        self.expected = np.array([g, int(self.table.target[g])])
 
     def _walk(self, ops, h=None):
         m, h = self.table, self.h if h is None else h
@@ -185,16 +231,47 @@ class HalfEdgeWalk(_Parts):
                      r"around the same face (counter-clockwise), `prev` the one before it; "
                      r"read the columns of the table with care.")
         return [
-            ("the half-edge g", float(g),
+            ("the half-edge g", g,
              [Mistake(reverse, inside_out, "inside out"),
               Mistake(swapped, next_prev, "next and prev swapped")]),
-            ("its target vertex", float(m.target[g]),
+            ("its target vertex", int(m.target[g]),
              [Mistake(m.origin[g], r"That is the **origin** of $g$, the vertex it leaves. Its "
                       r"target is where it arrives: the origin of `next(g)` (or of "
                       r"`twin(g)`).", "origin, not target"),
               Mistake(m.target[reverse], inside_out, "inside out"),
               Mistake(m.target[swapped], next_prev, "next and prev swapped")]),
         ]
+
+    def hints(self):
+        first = self.ops[0]
+        step = int(getattr(self.table, first)[self.h])
+        return [
+            r"A composition is read from the inside out: in "
+            r"$\operatorname{twin}(\operatorname{next}(h))$ you apply `next` first, then "
+            r"`twin`.",
+            r"Each function is a column of the table: in the row of the current half-edge, "
+            r"read the column of the function to apply; that gives the row to go to next. The "
+            r"target of a half-edge is the origin of its `next` (or of its `twin`).",
+            rf"The innermost function here is `{first}`: "
+            rf"$\operatorname{{{first}}}({self.h}) = {step}$. Go on "
+            rf"from row {step}.",
+        ]
+
+    def worked(self):
+        m = self.table
+        columns = {"next": m.next, "prev": m.prev, "twin": m.twin}
+        h = self.h
+        steps = [rf"Read $g = {self.expression()}$ from the inside out: "
+                 + ", then ".join(f"`{op}`" for op in self.ops) + "."]
+        for op in self.ops:
+            after = int(columns[op][h])
+            steps.append(rf"Row {h}, column `{op}`: $\operatorname{{{op}}}({h}) = {after}$.")
+            h = after
+        following = int(m.next[h])
+        target = int(m.origin[following])
+        steps.append(rf"So $g = {h}$. Its target is the origin of $\operatorname{{next}}({h}) = "
+                     rf"{following}$, which is vertex ${target}$.")
+        return Worked(steps, [h, target])
 
     def statement(self):
         return (
@@ -227,6 +304,7 @@ class OneRing(_Record):
     """
 
     title = "The one-ring of a vertex"
+    noun = "vertex"
     advice = (r"Repeat $h \leftarrow \operatorname{twin}(\operatorname{prev}(h))$ until you are "
             r"back at the first half-edge, and write down the target of each $h$.")
 
@@ -266,6 +344,46 @@ class OneRing(_Record):
 
     def separated(self, mistakes):
         return super().separated(mistakes) and len(set(self.expected)) == len(self.expected)
+
+    def _turns(self):
+        """[(h, its target, prev(h), twin(prev(h)))] once around v, from the given h."""
+        m, h, rows = self.table, self.h, []
+        while True:
+            p = int(m.prev[h])
+            after = int(m.twin[p])
+            rows.append((h, int(m.origin[m.next[h]]), p, after))
+            h = after
+            if h == self.h:
+                return rows
+
+    def hints(self):
+        h, target, p, after = self._turns()[0]
+        second = self._turns()[1][1]
+        return [
+            r"The half-edges leaving $v$, taken counter-clockwise, come one after the other "
+            r"by $h \leftarrow \operatorname{twin}(\operatorname{prev}(h))$; the target of "
+            r"each of them is one neighbour of $v$.",
+            r"`prev(h)` is the half-edge that enters $v$ on the face of $h$; its `twin` leaves "
+            r"$v$ on the next face counter-clockwise. The target of a half-edge is the origin "
+            r"of its `next`. Stop when you are back at the first half-edge.",
+            rf"First neighbour: the target of $h = {h}$ is ${target}$. Then "
+            rf"$\operatorname{{prev}}({h}) = {p}$ and $\operatorname{{twin}}({p}) = {after}$, "
+            rf"whose target ${second}$ is the second neighbour.",
+        ]
+
+    def worked(self):
+        rows = self._turns()
+        steps = [rf"Start with $h = {self.h}$, which leaves $v = {self.v}$; write down the "
+                 r"target of each half-edge (the origin of its `next`) and turn with "
+                 r"$h \leftarrow \operatorname{twin}(\operatorname{prev}(h))$."]
+        for h, target, p, after in rows:
+            steps.append(rf"$h = {h}$: target ${target}$; $\operatorname{{prev}}({h}) = {p}$, "
+                         rf"$\operatorname{{twin}}({p}) = {after}$"
+                         + (" (back at the start)." if after == self.h else "."))
+        ring = [target for _, target, _, _ in rows]
+        steps.append(r"The neighbours, counter-clockwise from the target of $h$: "
+                     + ", ".join(f"${t}$" for t in ring) + ".")
+        return Worked(steps, ring)
 
     def statement(self):
         return (

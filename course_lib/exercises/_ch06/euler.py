@@ -5,8 +5,8 @@ Part of :mod:`course_lib.exercises.ch06`, which imports every exercise from here
 
 import numpy as np
 
-from ..core import DrawnExercise, Mistake, data_note, pick
-from . import _Parts
+from ..core import DrawnExercise, Mistake, Worked, data_note, pick
+from . import _one_whole, _paren, _Parts
 
 __all__ = [
     "EdgeCollapseCounts",
@@ -47,7 +47,7 @@ class EulerCounts(_Parts):
         self.k = int(pick(rng, (3, 4)))
         self.genus = int(pick(rng, (0, 1, 1, 2, 3)))
         self.V = int(rng.integers(12, 41))
-        self.expected = np.array(self._counts(2 - 2 * self.genus), dtype=float)
+        self.expected = np.array([round(c) for c in self._counts(2 - 2 * self.genus)])
 
     def _counts(self, chi, edges_per_face=None):
         k, V = self.k, self.V
@@ -76,10 +76,45 @@ class EulerCounts(_Parts):
                                        rf"faces, so ${self.k}F = 2E$."),
         }
         E, F = self.expected
-        return [("the number of edges E", float(E),
+        return [("the number of edges E", int(E),
                  [Mistake(v[0], text, key) for key, (v, text) in slips.items()]),
-                ("the number of faces F", float(F),
+                ("the number of faces F", int(F),
                  [Mistake(v[1], text, key) for key, (v, text) in slips.items()])]
+
+    def hints(self):
+        k, V, g = self.k, self.V, self.genus
+        chi = 2 - 2 * g
+        factor = r"\tfrac{1}{2}" if k == 3 else "1"
+        return [
+            r"Two equations tie $V$, $E$ and $F$ together: Euler's formula "
+            r"$V - E + F = \chi = 2 - 2g$ for a closed orientable surface of genus $g$, and a "
+            r"count of the pairs (face, edge of that face).",
+            rf"Each face has ${k}$ edges and each edge lies on exactly 2 faces, so ${k}F = 2E$, "
+            rf"that is $E = \tfrac{{{k}}}{{2}}F$. Put this into Euler's formula and solve for "
+            r"$F$ first.",
+            rf"Here $\chi = 2 - 2 \cdot {g} = {chi}$, and with $E = \tfrac{{{k}}}{{2}}F$ "
+            rf"Euler's formula becomes $(\tfrac{{{k}}}{{2}} - 1)\,F = V - \chi$, that is "
+            rf"${factor}\,F = {V - chi}$.",
+        ]
+
+    def worked(self):
+        k, V, g = self.k, self.V, self.genus
+        chi = 2 - 2 * g
+        rest = V - chi
+        F = 2 * rest // (k - 2)
+        E = k * F // 2
+        return Worked([
+            rf"A closed orientable surface of genus $g = {g}$ has Euler characteristic "
+            rf"$\chi = 2 - 2g = {chi}$.",
+            rf"Count the pairs (face, edge): each of the $F$ faces has ${k}$ edges, and each "
+            rf"edge is counted twice (it lies on 2 faces), so ${k}F = 2E$ and "
+            rf"$E = \tfrac{{{k}}}{{2}}F$.",
+            rf"Substitute into $V - E + F = \chi$: $V - (\tfrac{{{k}}}{{2}} - 1)F = \chi$, so "
+            rf"$F = \dfrac{{V - \chi}}{{{k}/2 - 1}} = \dfrac{{{V} - {_paren(chi)}}}{{{k}/2 - 1}} = "
+            rf"\dfrac{{{rest}}}{{{k}/2 - 1}} = {F}$.",
+            rf"Then $E = \tfrac{{{k}}}{{2}} \cdot {F} = {E}$. Check: "
+            rf"${V} - {E} + {F} = {V - E + F} = \chi$.",
+        ], [E, F])
 
     def statement(self):
         kind = "triangle" if self.k == 3 else "quadrilateral"
@@ -127,7 +162,7 @@ class GenusFromCounts(DrawnExercise):
         # a triangle mesh: 3F = 2E - E_b, with V - E + F = chi
         self.E = 3 * (self.V - chi) - self.boundary_edges
         self.F = 2 * (self.V - chi) - self.boundary_edges
-        self.expected = float(self.genus)
+        self.expected = self.genus
 
     def acceptable(self):
         return self.boundary_edges <= self.V // 2 and self.F > 0
@@ -148,6 +183,35 @@ class GenusFromCounts(DrawnExercise):
                     r"$\chi = V - E + F$ (vertices plus, edges minus, faces plus).",
                     "chi signs"),
         ]
+
+    def _judge(self, answer):
+        return _one_whole(super()._judge(answer), self.what,
+                          r"Off by one: compute $\chi = V - E + F$ once more, and remember "
+                          r"that each handle lowers $\chi$ by 2 and each boundary loop by 1.")
+
+    def hints(self):
+        chi = self.V - self.E + self.F
+        return [
+            r"Euler's formula extends to surfaces with holes: a connected orientable surface "
+            r"with $g$ handles and $b$ boundary loops has $V - E + F = 2 - 2g - b$.",
+            r"Compute the Euler characteristic $\chi = V - E + F$ from the three counts, then "
+            r"solve $\chi = 2 - 2g - b$ for $g$.",
+            rf"Here $\chi = {self.V} - {self.E} + {self.F} = {chi}$ and $b = {self.b}$, so "
+            rf"$2g = 2 - b - \chi = {2 - self.b - chi}$.",
+        ]
+
+    def worked(self):
+        V, E, F, b = self.V, self.E, self.F, self.b
+        chi = V - E + F
+        twice = 2 - b - chi
+        g = twice // 2
+        return Worked([
+            rf"The Euler characteristic: $\chi = V - E + F = {V} - {E} + {F} = {chi}$.",
+            rf"For a connected orientable surface with $g$ handles and $b$ boundary loops, "
+            rf"$\chi = 2 - 2g - b$; here $b = {b}$"
+            + (" (the mesh is closed)." if b == 0 else "."),
+            rf"So $2g = 2 - b - \chi = 2 - {b} - {_paren(chi)} = {twice}$ and $g = {g}$.",
+        ], g)
 
     def statement(self):
         loops = {0: "no boundary (it is closed)", 1: "one boundary loop (one hole)"}.get(
@@ -196,8 +260,7 @@ class EdgeCollapseCounts(_Parts):
         self.n_interior = int(rng.integers(2, 9))
         self.n_boundary = int(rng.integers(1, 4)) if b else 0
         i, j = self.n_interior, self.n_boundary
-        self.expected = np.array([self.V - i - j, self.E - 3 * i - 2 * j, self.F - 2 * i - j],
-                                 dtype=float)
+        self.expected = np.array([self.V - i - j, self.E - 3 * i - 2 * j, self.F - 2 * i - j])
 
     def _parts(self):
         i, j = self.n_interior, self.n_boundary
@@ -225,6 +288,44 @@ class EdgeCollapseCounts(_Parts):
              [Mistake(F - i - j, one_face, "one face per collapse"),
               Mistake(F - 2 * (i + j), like_interior, "boundary as interior")]),
         ]
+
+    def hints(self):
+        i, j = self.n_interior, self.n_boundary
+        last = (rf"Here the {i} interior collapses remove {i} vertices, {3 * i} edges and "
+                rf"{2 * i} faces")
+        if j:
+            last += rf"; the {j} boundary collapses remove {j}, {2 * j} and {j} more."
+        else:
+            last += "."
+        return [
+            r"Picture one collapse: the edge shrinks to a point, its two end points merge into "
+            r"one vertex, and every face on the edge degenerates into a line and disappears.",
+            r"Count what one collapse removes: an interior edge (two faces) takes 1 vertex, 3 "
+            r"edges (itself and one of the two other edges of each face) and 2 faces; a "
+            r"boundary edge (one face) 1 vertex, 2 edges and 1 face. Multiply by the numbers of "
+            r"collapses.",
+            last,
+        ]
+
+    def worked(self):
+        i, j = self.n_interior, self.n_boundary
+        V, E, F = self.V - i - j, self.E - 3 * i - 2 * j, self.F - 2 * i - j
+        steps = [
+            rf"Each of the {i} interior collapses removes 1 vertex, 3 edges (the edge, and on "
+            r"each of its 2 faces one of the other two edges, which falls onto the third) and "
+            rf"2 faces: $-{i}$ vertices, $-{3 * i}$ edges, $-{2 * i}$ faces.",
+        ]
+        if j:
+            steps.append(rf"Each of the {j} boundary collapses removes 1 vertex, 2 edges and 1 "
+                         rf"face (a boundary edge has one face): $-{j}$, $-{2 * j}$, $-{j}$.")
+        steps += [
+            rf"$V = {self.V} - {i + j} = {V}$, $E = {self.E} - {3 * i + 2 * j} = {E}$, "
+            rf"$F = {self.F} - {2 * i + j} = {F}$.",
+            rf"Check: $V - E + F = {V - E + F}$, the same as before "
+            rf"(${self.V} - {self.E} + {self.F} = {self.V - self.E + self.F}$): a legal "
+            r"collapse does not change the topology.",
+        ]
+        return Worked(steps, [V, E, F])
 
     def statement(self):
         if self.n_boundary:

@@ -4,8 +4,9 @@ Part of :mod:`course_lib.exercises.ch06`, which imports every exercise from here
 """
 
 from ... import mesh
-from ..core import UNANSWERED, DrawnExercise, Feedback, data_note, has_placeholder, pick
-from . import _SMALL, _faces_words, _read_ints, _small_mesh
+from ..core import (UNANSWERED, DrawnExercise, Feedback, Worked, data_note, has_placeholder,
+                    pick)
+from . import _SMALL, _cycle, _face_latex, _faces_words, _read_ints, _small_mesh
 
 __all__ = [
     "MESH_KINDS",
@@ -106,6 +107,35 @@ def _pairs_words(edges):
     return ", ".join(f"({a}, {b})" for a, b in edges)
 
 
+def _fans_by_walk(faces, v):
+    """The fans of faces around vertex `v`, found as a student does: start at a face, step to
+    every face across an edge at `v`, until no new face is reached; then start a new fan.
+
+    (The worked solutions' own search, independent of the checker's :func:`_fans`.)
+    """
+    left = [k for k, f in enumerate(faces) if v in f]
+    edges = [{frozenset(e) for e in _cycle(f)} for f in faces]
+    fans = []
+    while left:
+        fan = [left.pop(0)]
+        todo = list(fan)
+        while todo:
+            k = todo.pop()
+            for edge in edges[k]:
+                if v not in edge:
+                    continue
+                for j in [j for j in left if edge in edges[j]]:
+                    left.remove(j)
+                    fan.append(j)
+                    todo.append(j)
+        fans.append(sorted(fan))
+    return fans
+
+
+def _face_set(ks):
+    return "{" + ", ".join(f"$f_{{{k}}}$" for k in ks) + "}"
+
+
 class Manifoldness(DrawnExercise):
     r"""Decide whether a small face list is a closed manifold, has a boundary, or is non-manifold.
 
@@ -203,6 +233,79 @@ class Manifoldness(DrawnExercise):
             return Feedback("correct", f"It is a {name}: {MESH_KINDS[name]}.")
         return Feedback("wrong", self._reason(name), f"said {name}")
 
+    def hints(self):
+        table = _edge_faces(self.faces)
+        crowded = sorted(e for e, fs in table.items() if len(fs) > 2)
+        border = sorted(e for e, fs in table.items() if len(fs) == 1)
+        if crowded:
+            a, b = crowded[0]
+            last = (rf"Look at the edge $({a}, {b})$: count the faces in which ${a}$ and ${b}$ "
+                    r"follow each other.")
+        else:
+            start = ("No edge has more than two faces here" if border else
+                     "Every edge has exactly two faces here")
+            if border:
+                start += (rf", and {len(border)} have only one (e.g. "
+                          rf"$({border[0][0]}, {border[0][1]})$)")
+            pinched = [v for v in sorted({v for f in self.faces for v in f})
+                       if len(_fans_by_walk(self.faces, v)) > 1]
+            probe = pinched[0] if pinched else min(v for f in self.faces for v in f)
+            around = [k for k, f in enumerate(self.faces) if probe in f]
+            last = (start + rf". Now the vertices: vertex ${probe}$, for one, lies on the "
+                    rf"faces {_face_set(around)}; can you walk between all of them across "
+                    rf"edges at ${probe}$?")
+        return [
+            r"Two tests decide: how many faces lie on each **edge** (1: a boundary edge, 2: "
+            r"fine, 3 or more: non-manifold), and whether the faces around each **vertex** "
+            r"form a single fan.",
+            r"List every edge as an unordered pair of vertices with the faces it lies on. If "
+            r"no edge has 3 faces, go round each vertex: the faces at the vertex that share an "
+            r"edge through it belong to the same fan; two or more separate fans pinch the "
+            r"surface at that vertex.",
+            last,
+        ]
+
+    def worked(self):
+        table = {}
+        for k, f in enumerate(self.faces):
+            for a, b in _cycle(f):
+                table.setdefault((min(a, b), max(a, b)), []).append(k)
+        crowded = {e: fs for e, fs in sorted(table.items()) if len(fs) > 2}
+        border = sorted(e for e, fs in table.items() if len(fs) == 1)
+        two = sum(len(fs) == 2 for fs in table.values())
+        listing = "; ".join(rf"$({a}, {b})$: " + ", ".join(f"$f_{{{k}}}$" for k in fs)
+                            for (a, b), fs in sorted(table.items()))
+        edges = rf"Of the {len(table)} edges, {two} lie on two faces"
+        if border:
+            edges += rf", {len(border)} on only one face (the boundary: {_pairs_words(border)})"
+        for (a, b), fs in crowded.items():
+            edges += rf", and $({a}, {b})$ lies on {len(fs)} faces"
+        steps = [rf"Each edge with the faces it lies on: {listing}.", edges + "."]
+        if crowded:
+            kind = "non-manifold edge"
+            steps.append(r"An edge with three or more faces is already non-manifold (like "
+                         r"pages on the spine of a book); the vertices need not be checked.")
+        else:
+            pinched = {}
+            for v in sorted({v for f in self.faces for v in f}):
+                fans = _fans_by_walk(self.faces, v)
+                if len(fans) > 1:
+                    pinched[v] = fans
+            if pinched:
+                kind = "non-manifold vertex"
+                v, fans = next(iter(pinched.items()))
+                steps.append(rf"Around vertex ${v}$ the faces form {len(fans)} fans, "
+                             + " and ".join(_face_set(fan) for fan in fans) + rf", that "
+                             rf"share no edge at ${v}$: they touch only at that vertex, so "
+                             r"the surface is pinched there.")
+            else:
+                kind = "manifold with boundary" if border else "closed manifold"
+                steps.append(r"Around every vertex the faces form a single fan (walking "
+                             r"across the edges at the vertex reaches all of its faces)"
+                             + (", open at the boundary vertices." if border else "."))
+        steps.append(rf"So the face list is a **{kind}**: {MESH_KINDS[kind]}.")
+        return Worked(steps, kind)
+
     def statement(self):
         rows = "\n".join(f"| `'{name}'` | {meaning} |" for name, meaning in MESH_KINDS.items())
         return (
@@ -240,7 +343,7 @@ class FlippedFace(DrawnExercise):
         self.flipped = int(rng.integers(len(faces)))
         faces[self.flipped] = faces[self.flipped][::-1]
         self.faces = faces
-        self.expected = float(self.flipped)
+        self.expected = self.flipped
         table = _edge_faces(faces)
         self.neighbours = sorted({k for fs in table.values() if self.flipped in fs
                                   for k in fs if k != self.flipped})
@@ -263,7 +366,7 @@ class FlippedFace(DrawnExercise):
     def _judge(self, answer):
         n = len(self.faces)
         value = _read_ints(answer, 1, f"Give the index of the face, a whole number from 0 to "
-                           f"{n - 1}.", 0, n - 1)
+                           f"{n - 1}.", 0, n - 1, noun="face")
         if isinstance(value, Feedback):
             return value
         k = value[0]
@@ -282,6 +385,48 @@ class FlippedFace(DrawnExercise):
                         r"direction to the face across it: it agrees with all its neighbours. "
                         r"For each edge $(a, b)$ of a face, check that the neighbour lists it as "
                         r"$(b, a)$.", "consistent face")
+
+    def _twice(self):
+        """{(a, b): [faces]} for the directed edges that two faces list in the same direction."""
+        directed = {}
+        for k, f in enumerate(self.faces):
+            for a, b in _cycle(f):
+                directed.setdefault((a, b), []).append(k)
+        return {e: ks for e, ks in sorted(directed.items()) if len(ks) > 1}
+
+    def hints(self):
+        twice = self._twice()
+        shown = ", ".join(rf"$({a} \to {b})$" for a, b in twice)
+        return [
+            r"With a consistent winding, two faces that share an edge run along it in "
+            r"**opposite** directions: if one face lists $(a, b)$ in that order, the face "
+            r"across the edge lists $(b, a)$.",
+            r"Write down the directed edges of every face (consecutive vertices, and the last "
+            r"back to the first). A directed edge that occurs in two faces marks a clash "
+            r"between them. One flipped face clashes with **every** one of its neighbours.",
+            rf"The directed edges that occur twice are {shown}. Which face takes part in all "
+            r"of these clashes?",
+        ]
+
+    def worked(self):
+        twice = self._twice()
+        common = set(range(len(self.faces)))
+        for ks in twice.values():
+            common &= set(ks)
+        k = min(common)
+        others = sorted({j for ks in twice.values() for j in ks} - {k})
+        listed = "; ".join(rf"$({a} \to {b})$ in " + " and ".join(f"$f_{{{j}}}$" for j in ks)
+                           for (a, b), ks in twice.items())
+        return Worked([
+            r"List the directed edges of each face. On a consistently wound mesh every "
+            r"directed edge occurs once: the face across it lists it the other way round.",
+            rf"These directed edges occur twice: {listed}.",
+            rf"{_face_latex(k, self.faces[k])} is in every clash: all its "
+            rf"{len(self.faces[k])} edges run the same way as in the neighbour across them, "
+            r"while each of its neighbours ("
+            + ", ".join(f"$f_{{{j}}}$" for j in others) + r") clashes with it only. "
+            rf"Reversing $f_{{{k}}}$ removes every clash, so $f_{{{k}}}$ is the flipped face.",
+        ], k)
 
     def statement(self):
         return (

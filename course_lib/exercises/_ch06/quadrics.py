@@ -9,7 +9,7 @@ import numpy as np
 
 from ... import format as fmt
 from ... import mesh
-from ..core import (DECIMALS, SAME, DrawnExercise, Feedback, Mistake, close, data_note,
+from ..core import (DECIMALS, SAME, DrawnExercise, Feedback, Mistake, Worked, close, data_note,
                     diagnose_matrix, diagnose_parts, parts_separated, read_floats)
 
 __all__ = [
@@ -59,6 +59,27 @@ def _draw_planes(rng, point, count, need_diagonal=False):
 
 def _quadric(planes):
     return sum(mesh.plane_quadric(p) for p in planes)
+
+
+def _root(square):
+    """The length of a whole-number normal from its squared length, as LaTeX: 1 or sqrt 2."""
+    square = int(round(square))
+    root = math.isqrt(square)
+    return str(root) if root * root == square else rf"\sqrt{{{square}}}"
+
+
+def _normalised_step(k, n, point):
+    """One plane normalised by hand: the step's text and the plane p = (a, b, c, d)."""
+    n = np.asarray(n, dtype=float)
+    square = float(n @ n)
+    offset = -float(n @ point)
+    p = np.append(n, offset) / math.sqrt(square)
+    root = _root(square)
+    scaled = (rf"(n, d) = {_vec(p)}$ (already normalised)" if root == "1" else
+              rf"\tfrac{{1}}{{{root}}}\,{_vec(np.append(n, offset))} = {_vec(p)}$")
+    text = (rf"Plane {k}, ${_plane_words(n, point)}$: $n = {_vec(n)}$, $|n| = {root}$, "
+            rf"$d = -n \cdot v = {_num(offset)}$, so $p_{k} = " + scaled + ".")
+    return text, p
 
 
 class VertexQuadric(DrawnExercise):
@@ -114,6 +135,32 @@ class VertexQuadric(DrawnExercise):
                     "summed planes first"),
         ]
 
+    def hints(self):
+        planes = ", ".join(rf"$p_{k} = {_vec(p)}$" for k, p in enumerate(self.planes, 1))
+        return [
+            r"Each plane through the vertex contributes its fundamental error quadric "
+            r"$K_p = p\,p^T$, with $p = (a, b, c, d)$ **normalised** ($a^2 + b^2 + c^2 = 1$); "
+            r"the vertex quadric is their sum.",
+            r"Normalise each equation $n \cdot x = c_0$ by dividing by $|n|$; then "
+            r"$d = -c_0 / |n|$ (check: $p^T (v, 1) = 0$ at the vertex). Entry $(i, j)$ of "
+            r"$p\,p^T$ is $p_i p_j$.",
+            rf"Here the normalised planes are {planes}.",
+        ]
+
+    def worked(self):
+        steps, rows = [], []
+        for k, n in enumerate(self.normals, 1):
+            text, p = _normalised_step(k, n, self.point)
+            steps.append(text)
+            rows.append(p)
+        quadrics = [np.outer(p, p) for p in rows]
+        steps.append(r"The outer products $K_k = p_k\,p_k^T$: "
+                     + ", ".join(rf"$K_{k} = {_matrix_latex(K)}$"
+                                 for k, K in enumerate(quadrics, 1)) + ".")
+        Q = quadrics[0] + quadrics[1] + quadrics[2]
+        steps.append(rf"Their sum: $Q = K_1 + K_2 + K_3 = {_matrix_latex(Q)}$.")
+        return Worked(steps, Q)
+
     def _judge(self, answer):
         value = read_floats(answer)
         if value is not None and value.shape == (3, 3) and close(value,
@@ -143,9 +190,12 @@ def _matrix_latex(Q):
 class _TwoVertices(DrawnExercise):
     """An edge (v1, v2), each end with two planes through it; the quadrics Q1, Q2."""
 
+    #: How far v2 may lie from v1, per coordinate.
+    reach = 2
+
     def _draw_edge(self, rng):
         self.v1 = rng.integers(-2, 3, size=3).astype(float)
-        self.v2 = self.v1 + rng.integers(-2, 3, size=3).astype(float)
+        self.v2 = self.v1 + rng.integers(-self.reach, self.reach + 1, size=3).astype(float)
         self.normals1 = _draw_planes(rng, self.v1, 2)
         self.normals2 = _draw_planes(rng, self.v2, 2)
         self.planes = np.array([_unit_plane(n, self.v1) for n in self.normals1]
@@ -183,6 +233,7 @@ class CollapseCost(_TwoVertices):
     title = "The cost of an edge collapse"
     answer_form = "number"
     what = "the cost"
+    reach = 3
     advice = (r"Add the quadrics, $\bar Q = Q_1 + Q_2$, write the midpoint with a 1 appended, "
             r"$\bar v = (x, y, z, 1)$, and compute $\bar v^T \bar Q \bar v$.")
 
@@ -214,6 +265,34 @@ class CollapseCost(_TwoVertices):
                     r"$\bar v^T \bar Q \bar v$ is a sum of **squared** distances; leave it "
                     r"squared.", "square root"),
         ]
+
+    def hints(self):
+        Q = self.Q1 + self.Q2
+        h = np.append((self.v1 + self.v2) / 2, 1.0)
+        return [
+            r"The error of the merged vertex at $\bar v$ is $\bar v^T \bar Q \bar v$, with "
+            r"$\bar Q = Q_1 + Q_2$ (the planes of both end points) and $\bar v$ in "
+            r"homogeneous coordinates.",
+            r"Take the midpoint $\frac{1}{2}(v_1 + v_2)$, append a 1, multiply "
+            r"$\bar Q \bar v$ first and then take the dot product of $\bar v$ with that "
+            r"vector.",
+            rf"Here $\bar v = {_vec(h)}$ and $\bar Q \bar v = {_vec(Q @ h)}$.",
+        ]
+
+    def worked(self):
+        Q = self.Q1 + self.Q2
+        mid = (self.v1 + self.v2) / 2
+        h = np.append(mid, 1.0)
+        Qh = Q @ h
+        cost = float(h @ Qh)
+        return Worked([
+            rf"Add the quadrics: $\bar Q = Q_1 + Q_2 = {_matrix_latex(Q)}$.",
+            rf"The midpoint: $\frac{{1}}{{2}}(v_1 + v_2) = {_vec(mid)}$, in homogeneous "
+            rf"coordinates $\bar v = {_vec(h)}$.",
+            rf"$\bar Q \bar v = {_vec(Qh)}$.",
+            rf"$\bar v^T (\bar Q \bar v) = {_num(cost, 4)}$: the sum of the squared distances "
+            r"of the midpoint to the four planes.",
+        ], cost)
 
     def statement(self):
         return (
@@ -303,6 +382,35 @@ class OptimalPosition(_TwoVertices):
                    for m in ms if m.key == key):
                 return False
         return True
+
+    def hints(self):
+        Q = self.Q1 + self.Q2
+        return [
+            r"Write the error as $f(\bar v) = \bar v^T A \bar v + 2 b^T \bar v + c$ with "
+            r"$\bar Q = Q_1 + Q_2 = \begin{pmatrix} A & b \\ b^T & c \end{pmatrix}$; at the "
+            r"minimum its gradient $2(A\bar v + b)$ vanishes.",
+            r"Solve the $3 \times 3$ system $A\,\bar v = -b$; the smallest error is then "
+            r"$f(\bar v) = c + b^T \bar v$ (because $\bar v^T A \bar v = -b^T \bar v$ there).",
+            rf"Here $A = {_matrix_latex(Q[:3, :3])}$, $b = {_vec(Q[:3, 3])}$ and "
+            rf"$c = {_num(Q[3, 3])}$.",
+        ]
+
+    def worked(self):
+        Q = self.Q1 + self.Q2
+        A, b, c = Q[:3, :3], Q[:3, 3], float(Q[3, 3])
+        x = np.linalg.solve(A, -b)
+        cost = c + float(b @ x)
+        return Worked([
+            rf"$\bar Q = Q_1 + Q_2 = {_matrix_latex(Q)}$: $A$ is its upper-left "
+            rf"$3 \times 3$ block, $b = {_vec(b)}$ the first three entries of its last column, "
+            rf"$c = {_num(c)}$.",
+            rf"Setting the gradient of $\bar v^T A \bar v + 2 b^T \bar v + c$ to zero gives "
+            rf"$A\,\bar v = -b$: ${_matrix_latex(A)}\,\bar v = {_vec(-b)}$.",
+            rf"$A$ is invertible (its determinant is {_num(float(np.linalg.det(A)), 4)}); "
+            rf"solving gives $\bar v = {_vec(x, 4)}$.",
+            rf"The error there: $c + b^T \bar v = {_num(c)} + ({_num(float(b @ x), 4)}) = "
+            rf"{_num(cost, 4)}$.",
+        ], [*x, cost])
 
     def mistakes(self):
         return []
