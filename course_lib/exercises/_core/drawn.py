@@ -134,6 +134,7 @@ class Exercise:
                             "then call `solution()` again; `hint()` helps on the way. "
                             "(`solution(reveal=True)` shows it now.)")
         worked = self.worked()
+        worked.title = f"Worked solution: {self.title} (variant {self.seed})"
         _record(self, "solution", attempts=self.attempts)
         return worked
 

@@ -142,12 +142,15 @@ class Worked:
         self.steps = steps
         self.answer = answer
         self.shown = shown
+        #: A heading (set by ``Exercise.solution``: which exercise and variant), or None.
+        self.title = None
 
     def markdown(self):
-        """The steps as a numbered list, then the answer."""
+        """The heading, the steps as a numbered list, then the answer."""
         lines = [f"{k}. {step}" for k, step in enumerate(self.steps, 1)]
         shown = self.shown if self.shown is not None else _answer_markdown(self.answer)
-        return "\n".join(lines) + f"\n\n**Answer:** {shown}"
+        head = f"**{self.title}**\n\n" if self.title else ""
+        return head + "\n".join(lines) + f"\n\n**Answer:** {shown}"
 
     def _repr_markdown_(self):
         return self.markdown()
