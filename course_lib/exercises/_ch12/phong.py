@@ -325,7 +325,7 @@ class SpecularTerm(_Boundary, DrawnExercise):
         clamped = max(rv, 0.0)
         value = self.ks * self.Il * clamped ** self.n
         if rv < 0:
-            steps.append(rf"**The boundary case:** $R \cdot V < 0$, the viewer is more than "
+            steps.append(r"**The boundary case:** $R \cdot V < 0$, the viewer is more than "
                          r"$90^\circ$ from the mirror direction and sees no highlight: "
                          r"$\max(R \cdot V, 0)^n = 0^n = 0$ (clamp *before* the power: an even "
                          r"power would turn the negative cosine positive).")
