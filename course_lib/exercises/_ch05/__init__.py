@@ -10,7 +10,7 @@ from fractions import Fraction
 import numpy as np
 
 from ... import format as fmt
-from ..core import UNANSWERED, DrawnExercise, Feedback, is_unanswered, pick
+from ..core import UNANSWERED, DrawnExercise, Feedback, agrees, is_unanswered, pick
 
 
 _vec = fmt.vector_latex
@@ -105,13 +105,13 @@ def _one_whole(feedback, what, off_by_one):
     return feedback
 
 
-def _cyclic_match(a, b, atol=2e-3):
-    """Whether the vertex lists `a` and `b` are the same cycle (any starting vertex)."""
+def _cyclic_match(a, b):
+    """Whether answer `a` and the vertex list `b` are the same cycle (any starting vertex), by
+    the course's tolerance policy."""
     a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
     if a.shape != b.shape:
         return False
-    return any(np.allclose(np.roll(a, s, axis=0), b, rtol=1e-3, atol=atol)
-               for s in range(len(a)))
+    return any(agrees(np.roll(a, s, axis=0), b) for s in range(len(a)))
 
 
 def _cross2(a, b):
@@ -326,6 +326,6 @@ def _equal_answers(a, b):
 # ---------------------------------------------------------------------------------------------
 
 def _same_segment(a, b):
+    """Whether answer `a` is segment `b`, either way round, by the course's tolerance policy."""
     a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    return bool(np.allclose(a, b, rtol=1e-3, atol=2e-3)
-                or np.allclose(a[::-1], b, rtol=1e-3, atol=2e-3))
+    return agrees(a, b) or (a.shape == b.shape and agrees(a[::-1], b))

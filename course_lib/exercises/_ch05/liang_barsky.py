@@ -12,7 +12,7 @@ from fractions import Fraction
 from ... import clipping
 from ..core import (DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, Worked,
                     data_note, diagnose_matrix, diagnose_parts, latex_fraction, latex_vector,
-                    parts_separated, pick, read_floats)
+                    parts_separated, pick, read_floats, tolerance)
 from . import (ON_SIDE, PARALLEL, THROUGH_CORNER, THROUGH_EDGE, _Boundary, _boundary_segment,
                _box_words, _clip_words, _draw_box_2d, _equal_answers, _Listed, _same_segment,
                _segment_cases, _unanswered, _vec)
@@ -216,7 +216,7 @@ class LiangBarskyTable(_Boundary, DrawnExercise):
                              transform=False)
         if fb.diagnosis not in ("sign", "entries differ"):
             return fb
-        off = ~np.isclose(value, self.expected, rtol=1e-3, atol=2e-3)
+        off = np.abs(value - self.expected) > tolerance(self.expected)
         cells = ", ".join(f"{'pqt'[j]} of {_SIDES_2D[i]}" for i, j in np.argwhere(off))
         lead = ("Right sizes, but these entries have the wrong sign:" if fb.diagnosis == "sign"
                 else "These entries are off:")
