@@ -155,3 +155,24 @@ def test_recording_never_stops_an_exercise(tmp_path, monkeypatch):
         warnings.simplefilter("always")
         assert ex.check(-1).status == "wrong" and ex.check(ex.x * 2).status == "correct"
     assert any("could not be saved" in str(w.message) for w in caught)
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=_ids)
+def test_a_right_answer_rounded_to_two_decimals_is_right_or_close_never_a_mistake(cls):
+    """Rounded answers get "close: give more digits" before any diagnosis (they used to get
+    "wrong length" or "not normalized"): for every variant whose answer keeps 2 significant
+    digits at 2 decimals, the rounded answer is right or "rounded"."""
+    for seed in range(60):
+        ex = cls(seed=seed)
+        answer = ex.worked().answer
+        try:
+            value = np.asarray(answer, dtype=float)
+        except (TypeError, ValueError):
+            return                                            # not an answer of numbers
+        if value.dtype.kind != "f" or not value.size or np.abs(value).max() < 0.1:
+            continue
+        rounded = np.round(value, 2)
+        if np.array_equal(rounded, value):
+            continue
+        fb = ex.check(rounded.tolist())
+        assert fb.status == "correct" or fb.diagnosis == "rounded", (ex, value, fb)

@@ -9,7 +9,8 @@ import numpy as np
 
 from ... import shading
 from ..core import (DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, Worked, close,
-                    data_note, gap, is_unanswered, pick, read_floats, well_separated)
+                    data_note, gap, is_unanswered, pick, read_floats, rounding_of,
+                    well_separated)
 from . import (_DOWN, _DOWN_RV, _ONE_NUMBER, _UP, _UP_DOT, _UP_NH, _UP_RV, _Boundary, _dot, _frac,
                _frame, _integer_vector, _length, _material_words, _n4, _nice_unit, _num, _pair,
                _unit, _vec)
@@ -640,6 +641,11 @@ class BlinnPhongHighlight(_Boundary, DrawnExercise):
                     if close(pieces[name], m.value) and not close(m.value, expected):
                         return Feedback("wrong", f"*{name[0].upper()}{name[1:]}:* "
                                         f"{m.explanation}{summary}", m.key)
+        rounded = [name for name, expected, found in self._parts
+                   if name in wrong and rounding_of(pieces[name], expected, found)]
+        if rounded:
+            return Feedback("wrong", f"Close: {' and '.join(rounded)} look rounded to too few "
+                            f"digits; give at least 3 significant digits.{summary}", "rounded")
         length = float(np.linalg.norm(values[:3]))
         if "the halfway vector H" in wrong and abs(length - 1) > 1e-3:
             return Feedback("wrong", f"Your H has length {_num(length)}; the halfway vector is "

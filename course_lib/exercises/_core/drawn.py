@@ -10,10 +10,10 @@ import zlib
 import numpy as np
 
 from ... import format as fmt
-from .feedback import (UNEXPLAINED, Feedback, _has_bool, _is_whole, _multiple, _off, as_vector,
-                       diagnose_matrix,
+from .feedback import (UNEXPLAINED, Feedback, _has_bool, _is_whole, _multiple, _off,
+                       _rounded_feedback, agrees, as_vector, diagnose_matrix,
                        diagnose_number, diagnose_parts, diagnose_vector, hinted, read_floats,
-                       tolerance)
+                       rounding_of, tolerance)
 from .guidance import Guidance, _record, recorded_check
 
 __all__ = [
@@ -432,6 +432,24 @@ class DrawnExercise(Exercise):
                               sign_free=self.answer_form == "quaternion",
                               projective=self.homogeneous_scale)
 
+    def _rounded(self, answer):
+        """The "close: give more digits" verdict when `answer` is the expected one rounded to
+        too few digits (and matches no anticipated mistake); None otherwise. Tried before any
+        other diagnosis, whatever the answer form."""
+        expected = getattr(self, "expected", None)
+        if expected is None or _is_whole(expected) or _has_bool(answer) \
+                or hasattr(self, "_parts"):    # several numbers: judged part by part
+            return None
+        value, right = read_floats(answer), read_floats(expected)
+        if value is None or right is None or right.dtype.kind != "f":
+            return None
+        value = as_vector(value, right.size) if right.ndim == 1 else value
+        if value.shape != right.shape or agrees(value, right):
+            return None
+        if rounding_of(value, right, getattr(self, "_mistakes", ())):
+            return _rounded_feedback(self.what)
+        return None
+
     def check(self, answer):
         """Judge `answer` and say what is wrong with it; never raises.
 
@@ -445,7 +463,8 @@ class DrawnExercise(Exercise):
         Feedback
         """
         try:
-            return self._check(answer)
+            rounded = self._rounded(answer)          # a Feedback is falsy unless correct
+            return rounded if rounded is not None else self._check(answer)
         except Exception as exc:          # a checker must never stop the notebook
             return Feedback("invalid", f"Your answer could not be checked ({exc}); give it in "
                             "the form the question asks for.", "unreadable")

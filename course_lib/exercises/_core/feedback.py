@@ -122,8 +122,10 @@ def _roundings(x):
 def rounding_of(value, expected, mistakes=()):
     """Whether `value` is `expected` rounded (or cut) to too few digits, entry by entry.
 
-    Each entry must keep 2 significant digits at least (1.0 is no rounding of 1.047 worth
-    calling close). An entry given exactly counts as rounded; at least one must differ, every one must be
+    Either the whole answer is rounded to one number of decimals that keeps 2 significant
+    digits of its largest entry ([0.97, 0.01] for [0.974, 0.0087]), or each entry keeps 2
+    significant digits at least (1.0 is no rounding of 1.047 worth calling close). An entry
+    given exactly counts as rounded; at least one must differ, every one must be
     within :data:`CLOSE_SHARE` of the largest entry of `expected`, and an anticipated mistake
     that `value` matches exactly is not taken for a rounding.
 
@@ -140,13 +142,26 @@ def rounding_of(value, expected, mistakes=()):
     scale = float(np.abs(b).max())
     if scale == 0 or float(np.abs(a - b).max()) > CLOSE_SHARE * scale:
         return False
-    for x, y in zip(a.ravel(), b.ravel()):
-        if abs(x - y) > 1e-12 and not any(math.isclose(x, r, rel_tol=1e-9, abs_tol=1e-12)
-                              for r in _roundings(float(y))):
-            return False
+    pairs = list(zip(a.ravel().tolist(), b.ravel().tolist()))
+
+    def cut(x, y, d):                          # x is y rounded, floored or cut to d decimals
+        step = 10.0 ** d
+        return any(math.isclose(x, float(f(y * step)) / step, rel_tol=1e-9, abs_tol=1e-12)
+                   for f in (round, math.floor, math.ceil, math.trunc))
+
+    # the whole answer to d decimals (its largest entry keeping 2 digits), or entry by entry
+    uniform = any(10 * scale * 10.0 ** d >= 10 - 1e-9
+                  and all(abs(x - y) <= 1e-12 or cut(x, y, d) for x, y in pairs)
+                  for d in range(-2, 7))
+    if not uniform and not all(abs(x - y) <= 1e-12 or any(
+            math.isclose(x, r, rel_tol=1e-9, abs_tol=1e-12) for r in _roundings(y))
+            for x, y in pairs):
+        return False
     for mistake in mistakes:
-        wrong = np.asarray(mistake.value, dtype=float) if not isinstance(mistake.value, float) \
-            else np.asarray(mistake.value)
+        try:
+            wrong = np.asarray(mistake.value, dtype=float)
+        except (TypeError, ValueError):        # a mistake that is no numbers ('rejected')
+            continue
         if wrong.shape == a.shape and np.allclose(a, wrong, rtol=1e-9, atol=1e-12):
             return False
     return True
