@@ -934,7 +934,11 @@ def test_first_collapse_is_the_cheapest_edge():
             x = (v[a] + v[b]) / 2
         costs.append(M.collapse_cost(q, x))
     assert c.cost == pytest.approx(min(costs), rel=1e-6, abs=1e-15)
-    assert {c.kept, c.removed} == set(edges[int(np.argmin(costs))].tolist())
+    # the bumpy sphere is symmetric: several edges tie for the cheapest (to the last bits, which
+    # the BLAS decides), and any of them is right
+    cheapest = [set(e.tolist()) for e, cost in zip(edges, costs)
+                if cost <= min(costs) * (1 + 1e-6) + 1e-15]
+    assert {c.kept, c.removed} in cheapest and len(cheapest) < len(edges) // 4
 
 
 @pytest.mark.parametrize("name, genus", [("torus", 1), ("double torus", 2)])

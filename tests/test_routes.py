@@ -344,7 +344,8 @@ def test_binder_layout_start_page_shows_a_recorded_exam_and_git_stays_clean(tmp_
     assert Path(saved["file"]) == progress_file.resolve() and progress_file.is_file()
     # four questions over two chapters: two each, in chapter order; only the first is right
     assert saved["chapters"] == [3, 3, 7, 7]
-    stored = json.loads(progress_file.read_text())["exams"]
+    header, *stored = [json.loads(line) for line in progress_file.read_text().splitlines()]
+    assert header == {"format": "graphics-course-progress", "version": 2}
     assert [(e["seed"], e["score"]) for e in stored] == [(11, {"3": [1, 2], "7": [0, 2]})]
 
     after, second = report()

@@ -282,7 +282,8 @@ def _load(file):
         repaired = None
         what = ("the file could not be read" if records is None else
                 f"{sum(b[2] is not None for b in bad)} of its records could not be read")
-        notices.append(f"In the progress file {file} {what} ({bad if records is None else bad[0][1]}), "
+        why = bad if records is None else bad[0][1]
+        notices.append(f"In the progress file {file} {what} ({why}), "
                        f"and nothing could be set aside ({exc.strerror or exc}): "
                        "the readable records are used, the file is left as it is.")
     if repaired is None:

@@ -211,13 +211,13 @@ def progress_report(path=None):
         lines += [f"**{len(history)} mock exam{'s' if len(history) > 1 else ''} taken**, the "
                   f"last on {last['date'][:10]} (progress file: `{shown}`).", "",
                   "| chapter | right | asked | share |", "|---:|---:|---:|---:|"]
-        lines += [f"| {ch} | {_count(r)} | {t} | {100 * r / t:.0f}% |"
+        lines += [f"| {ch} | {_score_text(r)} | {t} | {100 * r / t:.0f}% |"
                   for ch, (r, t) in scores.items()]
         weak = weakest_chapters(history)
         lines.append("")
         if weak:
-            listed = ", ".join(f"chapter {w['chapter']} ({_count(w['right'])} of {w['total']} "
-                               "right)" for w in weak)
+            listed = ", ".join(f"chapter {w['chapter']} ({_score_text(w['right'])} of "
+                               f"{w['total']} right)" for w in weak)
             lines.append(f"**Weakest chapters:** {listed}. Reread those lessons and redo their "
                          "exercises with a new `SEED`; the next mock exam asks more of them.")
         else:
@@ -252,7 +252,7 @@ def progress_report(path=None):
     return "\n".join(lines + notes + warning)
 
 
-def _count(x):
+def _score_text(x):
     """A score as written: 3, or 2.5 with partial credit."""
     return f"{x:g}" if isinstance(x, float) else str(x)
 

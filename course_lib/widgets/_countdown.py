@@ -29,7 +29,10 @@ function render({ model, el }) {
     }
     if (model.get("stopped") || left <= 0) { clearInterval(timer); timer = null; }
   };
-  const start = () => { if (timer === null && !model.get("stopped")) timer = setInterval(paint, 250); paint(); };
+  const start = () => {
+    if (timer === null && !model.get("stopped")) timer = setInterval(paint, 250);
+    paint();
+  };
   model.on("change:deadline", start);
   model.on("change:stopped", paint);
   start();

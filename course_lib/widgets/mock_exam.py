@@ -87,8 +87,10 @@ def plan_note(exam):
     Examples
     --------
     >>> wrong = [{"kind": "attempt", "key": "ch05.Outcodes", "seed": 1, "status": "wrong"}]
-    >>> plan_note(mock.mock_exam(seed=1, chapters=[3, 5], n_questions=4, history=wrong))
-    'Drawn from your results: more questions from chapter 5; 1 question you got wrong comes back in a new variant.'
+    >>> print(plan_note(mock.mock_exam(seed=1, chapters=[3, 5], n_questions=4, history=wrong)))
+    ... # doctest: +NORMALIZE_WHITESPACE
+    Drawn from your results: more questions from chapter 5; 1 question you got wrong comes
+    back in a new variant.
     """
     plan = exam.plan
     if not plan:

@@ -1,1 +1,2 @@
-"""The exercise machinery, one module per topic; import it from :mod:`course_lib.exercises.core`."""
+"""The exercise machinery, one module per topic; import it from
+:mod:`course_lib.exercises.core`."""

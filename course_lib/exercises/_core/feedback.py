@@ -595,8 +595,9 @@ def _not_whole(value, what):
     fractional = flat[np.abs(flat - np.round(flat)) > WHOLE_SLACK]
     if not fractional.size:
         return None
+    shown = fmt.number(float(fractional[0]), 4)
     return Feedback("wrong", f"{_cap(what)} is made of whole numbers (counts, indices or "
-                    f"codes), and yours has a fractional part ({fmt.number(float(fractional[0]), 4)}): "
+                    f"codes), and yours has a fractional part ({shown}): "
                     "count or index again; nothing here is averaged or interpolated.", "not whole")
 
 
@@ -806,7 +807,8 @@ def diagnose_parts(answer, parts, what, form_hint, hint=""):
         return Feedback("wrong", f"*{_cap(name)}:* {mistake.explanation}" + summary,
                         mistake.key, credit=credit)
     if rounded:
-        return Feedback("wrong", f"Close: {', '.join(rounded)} look{'s' if len(rounded) == 1 else ''} "
+        verb = "looks" if len(rounded) == 1 else "look"
+        return Feedback("wrong", f"Close: {', '.join(rounded)} {verb} "
                         f"rounded to too few digits; give at least {SIGNIFICANT} significant "
                         f"digits.{summary}", "rounded", credit=credit)
     return Feedback("wrong", f"Some of your numbers are off.{summary} {hint}".rstrip(),
