@@ -90,21 +90,6 @@ def _set_feedback(answer, expected, mistakes, n, what, hint, right):
     return Feedback("wrong", f"Not quite: {' and '.join(parts)}. {hint}", "indices differ")
 
 
-def _one_whole(feedback, what, off_by_one):
-    """The verdict on one whole number, in the words of one number.
-
-    The core's whole-number diagnoses speak of components (of a vector); for a single count
-    the off-by-one verdict gets `off_by_one`, and any other unexplained one says the number
-    differs (diagnosis ``"value differs"``, which the exercise's advice then follows).
-    """
-    if feedback.diagnosis == "off by one":
-        return Feedback("wrong", off_by_one, "off by one")
-    if feedback.diagnosis == "components differ":
-        return Feedback("wrong", f"{what[:1].upper() + what[1:]} should be different.",
-                        "value differs")
-    return feedback
-
-
 def _cyclic_match(a, b):
     """Whether answer `a` and the vertex list `b` are the same cycle (any starting vertex), by
     the course's tolerance policy."""

@@ -11,7 +11,7 @@ from ... import clipping
 from ..core import (APART, DECIMALS, SAME, UNANSWERED, DrawnExercise, Feedback, Mistake, Worked,
                     data_note, gap, latex_fraction, latex_vector, pick, read_floats)
 from . import (ON_SIDE, THROUGH_CORNER, _Boundary, _boundary_segment, _box_words, _clip_words,
-               _draw_box_2d, _Listed, _off_bound_point, _on_bound, _onto_bound, _one_whole,
+               _draw_box_2d, _Listed, _off_bound_point, _on_bound, _onto_bound,
                _quick_code, _same_segment, _segment_cases, _unanswered, _vec)
 
 __all__ = [
@@ -790,6 +790,9 @@ class CohenSutherlandIntersections(_Boundary, DrawnExercise):
     title = "Cohen-Sutherland: how many intersections?"
     answer_form = "number"
     what = "the number of intersections"
+    off_by_one = (r"Off by one: follow the passes again. Each pass that neither accepts nor "
+                  r"rejects computes exactly one intersection; the last pass, which accepts or "
+                  r"rejects, computes none.")
 
     def draw(self, rng):
         self.box_min, self.box_max = _draw_box_2d(rng)
@@ -848,10 +851,7 @@ class CohenSutherlandIntersections(_Boundary, DrawnExercise):
         return _distinct_only(self.expected, mistakes)
 
     def _judge(self, answer):
-        fb = _one_whole(super()._judge(answer), self.what,
-                        r"Off by one: follow the passes again. Each pass that neither accepts "
-                        r"nor rejects computes exactly one intersection; the last pass, which "
-                        r"accepts or rejects, computes none.")
+        fb = super()._judge(answer)
         if fb.diagnosis == "value differs":
             fb = Feedback("wrong", r"Not that number. Follow the algorithm pass by pass: "
                           r"compute both outcodes; if $c_0 \lor c_1 = 0$ accept, if "

@@ -8,7 +8,7 @@ import numpy as np
 from ... import format as fmt
 from ..core import (UNANSWERED, DrawnExercise, Feedback, Mistake, Worked, data_note, pick,
                     read_floats)
-from . import _cross2, _num, _one_whole, _unanswered
+from . import _cross2, _num, _unanswered
 
 __all__ = [
     "ZBufferIds",
@@ -296,11 +296,9 @@ class ZBufferWrites(DrawnExercise):
                     r"are written).", "counted the failures"),
         ]
 
-    def _judge(self, answer):
-        return _one_whole(super()._judge(answer), self.what,
-                          r"Off by one: go through the fragments once more, triangle by "
-                          r"triangle; a fragment is written when its depth is **less** than "
-                          r"the one stored at that moment.")
+    off_by_one = (r"Off by one: go through the fragments once more, triangle by triangle; a "
+                  r"fragment is written when its depth is **less** than the one stored at that "
+                  r"moment.")
 
     def hints(self):
         covers = [_cover_by_hand(t) for t in self.triangles]

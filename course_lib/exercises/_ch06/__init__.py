@@ -62,21 +62,6 @@ def _out_of_range(values, low, high, noun):
                     f"{low} to {high} (counted from 0).", "out of range")
 
 
-def _one_whole(feedback, what, off_by_one):
-    """The verdict on one whole number, in the words of one number.
-
-    The core's whole-number diagnoses speak of components (of a vector); for a single count
-    the off-by-one verdict gets `off_by_one` and any other unexplained one says the number
-    differs (diagnosis ``"value differs"``, which the exercise's advice then follows).
-    """
-    if feedback.diagnosis == "off by one":
-        return Feedback("wrong", off_by_one, "off by one")
-    if feedback.diagnosis == "components differ":
-        return Feedback("wrong", f"{what[:1].upper() + what[1:]} should be different.",
-                        "value differs")
-    return feedback
-
-
 def _paren(x):
     """A whole number as text, in parentheses when negative (to follow a minus sign)."""
     return f"({x})" if x < 0 else str(x)

@@ -6,7 +6,7 @@ Part of :mod:`course_lib.exercises.ch06`, which imports every exercise from here
 import numpy as np
 
 from ..core import DrawnExercise, Mistake, Worked, data_note, pick
-from . import _one_whole, _paren, _Parts
+from . import _paren, _Parts
 
 __all__ = [
     "EdgeCollapseCounts",
@@ -184,10 +184,8 @@ class GenusFromCounts(DrawnExercise):
                     "chi signs"),
         ]
 
-    def _judge(self, answer):
-        return _one_whole(super()._judge(answer), self.what,
-                          r"Off by one: compute $\chi = V - E + F$ once more, and remember "
-                          r"that each handle lowers $\chi$ by 2 and each boundary loop by 1.")
+    off_by_one = (r"Off by one: compute $\chi = V - E + F$ once more, and remember that each "
+                  r"handle lowers $\chi$ by 2 and each boundary loop by 1.")
 
     def hints(self):
         chi = self.V - self.E + self.F

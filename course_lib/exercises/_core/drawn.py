@@ -350,9 +350,12 @@ class DrawnExercise(Exercise):
     projective_point : bool
         Point form: a homogeneous answer with ``w != 1`` is named as a forgotten homogeneous
         divide.
-    hint : str
+    advice : str
         How to get the answer right: it ends the feedback on a wrong answer that no anticipated
         mistake explains (a diagnosis in ``UNEXPLAINED``). Empty: nothing is added.
+    off_by_one : str
+        What a whole-number answer one off is told, in this exercise's words (empty: the
+        core's "off by one" wording).
     vector_like : bool
         Vector and point forms: whether "right direction, wrong length" means something (a
         direction, a tangent). False for a point or a list of values: such an answer is told
@@ -390,6 +393,7 @@ class DrawnExercise(Exercise):
     #: wording of the generic diagnoses of :func:`diagnose_matrix`.
     transform = True
     advice = ""
+    off_by_one = ""
     vector_like = True
     reject_bool = False
 
@@ -479,6 +483,8 @@ class DrawnExercise(Exercise):
             return Feedback("invalid", "Your answer is True or False; give a number.",
                             "not a number")
         feedback = self._by_form(answer)
+        if feedback.diagnosis == "off by one" and self.off_by_one:
+            feedback = Feedback("wrong", self.off_by_one, "off by one")
         if feedback.diagnosis == "wrong length" and not self.vector_like:
             expected = np.ravel(self.expected)
             value = np.ravel(read_floats(answer))[:len(expected)]
@@ -578,7 +584,7 @@ class PartsAnswer:
     >>> from course_lib.exercises.core import Mistake
     >>> class SumProduct(PartsAnswer, DrawnExercise):
     ...     title = "Sum and product"
-    ...     hint = ""
+    ...     advice = ""
     ...     def draw(self, rng):
     ...         self.a, self.b = int(rng.integers(2, 6)), int(rng.integers(7, 10))
     ...     def parts(self):

@@ -106,17 +106,20 @@ def agrees(value, expected, whole=False, floor=ATOL):
     return bool(np.all(np.abs(a - b) <= tolerance(b, floor)))
 
 
-def _roundings(x):
-    """The values `x` takes when rounded, floored or cut to 2 significant digits or more (to
-    hundreds down to 6 decimals)."""
-    found = set()
-    for d in range(-2, 7):
-        scale = 10.0 ** d
-        if 10 * abs(x) * scale < 10 - 1e-9:          # fewer than 2 significant digits kept
-            continue
-        for f in (round, math.floor, math.ceil, math.trunc):
-            found.add(float(f(x * scale)) / scale)
-    return found
+#: The numbers of decimals an answer may be rounded to: to hundreds down to 6 decimals.
+_DECIMALS = range(-2, 7)
+
+
+def _two_digits(x, d):
+    """Whether `x` keeps 2 significant digits or more when given to `d` decimals."""
+    return 10 * abs(x) * 10.0 ** d >= 10 - 1e-9
+
+
+def _cut(x, y, d):
+    """Whether `x` is `y` rounded, floored, ceiled or cut to `d` decimals."""
+    step = 10.0 ** d
+    return any(math.isclose(x, float(f(y * step)) / step, rel_tol=1e-9, abs_tol=1e-12)
+               for f in (round, math.floor, math.ceil, math.trunc))
 
 
 def rounding_of(value, expected, mistakes=()):
@@ -142,20 +145,13 @@ def rounding_of(value, expected, mistakes=()):
     scale = float(np.abs(b).max())
     if scale == 0 or float(np.abs(a - b).max()) > CLOSE_SHARE * scale:
         return False
-    pairs = list(zip(a.ravel().tolist(), b.ravel().tolist()))
-
-    def cut(x, y, d):                          # x is y rounded, floored or cut to d decimals
-        step = 10.0 ** d
-        return any(math.isclose(x, float(f(y * step)) / step, rel_tol=1e-9, abs_tol=1e-12)
-                   for f in (round, math.floor, math.ceil, math.trunc))
-
+    pairs = [(x, y) for x, y in zip(a.ravel().tolist(), b.ravel().tolist())
+             if abs(x - y) > 1e-12]               # the entries given otherwise than exactly
     # the whole answer to d decimals (its largest entry keeping 2 digits), or entry by entry
-    uniform = any(10 * scale * 10.0 ** d >= 10 - 1e-9
-                  and all(abs(x - y) <= 1e-12 or cut(x, y, d) for x, y in pairs)
-                  for d in range(-2, 7))
-    if not uniform and not all(abs(x - y) <= 1e-12 or any(
-            math.isclose(x, r, rel_tol=1e-9, abs_tol=1e-12) for r in _roundings(y))
-            for x, y in pairs):
+    uniform = any(_two_digits(scale, d) and all(_cut(x, y, d) for x, y in pairs)
+                  for d in _DECIMALS)
+    if not uniform and not all(any(_two_digits(y, d) and _cut(x, y, d) for d in _DECIMALS)
+                               for x, y in pairs):
         return False
     for mistake in mistakes:
         try:
@@ -601,17 +597,13 @@ def _not_whole(value, what):
                     "count or index again; nothing here is averaged or interpolated.", "not whole")
 
 
-def _same_whole(a, b):
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    return a.shape == b.shape and bool(np.all(np.abs(a - b) <= WHOLE_SLACK))
-
-
 def _whole_vector(value, expected, mistakes, what):
     """Whole numbers compared exactly, with the anticipated mistakes and an off-by-one check."""
-    if _same_whole(value, expected):
+    if agrees(value, expected, whole=True):
         return Feedback("correct", f"{_cap(what)} is right.")
     for mistake in mistakes:
-        if _same_whole(value, mistake.value) and not _same_whole(mistake.value, expected):
+        if agrees(value, mistake.value, whole=True) \
+                and not agrees(mistake.value, expected, whole=True):
             return Feedback("wrong", mistake.explanation, mistake.key)
     bad = _not_whole(value, what)
     if bad is not None:
