@@ -568,10 +568,9 @@ def _weighted_counts(rng, chapters, n, weights):
     """How many questions each chapter gets, in proportion to its weight (at least one each
     while there are enough questions); the largest remainders get the rest, ties by `rng`."""
     w = np.array([weights.get(ch, UNKNOWN_WEIGHT) for ch in chapters], dtype=float)
-    order = rng.permutation(len(chapters))
+    place = np.argsort(rng.permutation(len(chapters)))     # chapter i's place in a shuffle
     if n < len(chapters):
-        ranked = sorted(range(len(chapters)), key=lambda i: (-w[i], int(np.argwhere(
-            order == i)[0, 0])))
+        ranked = sorted(range(len(chapters)), key=lambda i: (-w[i], int(place[i])))
         return {ch: int(i in ranked[:n]) for i, ch in enumerate(chapters)}
     counts = np.ones(len(chapters), dtype=int)
     share = w / w.sum() * (n - len(chapters))
@@ -579,7 +578,7 @@ def _weighted_counts(rng, chapters, n, weights):
     rest = share - np.floor(share + 1e-9)
     left = n - int(counts.sum())
     ranked = sorted(range(len(chapters)), key=lambda i: (-round(rest[i], 9), -w[i],
-                                                         int(np.argwhere(order == i)[0, 0])))
+                                                         int(place[i])))
     for i in ranked[:left]:
         counts[i] += 1
     return {ch: int(c) for ch, c in zip(chapters, counts)}

@@ -26,8 +26,8 @@ except ImportError:                     # pragma: no cover - not on the CI's pla
 
 _HEADER = {"format": FORMAT, "version": VERSION}
 _HEADER_LINE = json.dumps(_HEADER, sort_keys=True) + "\n"
-#: What each kind of record holds besides its ``kind`` and ``date`` (type per key).
-_EVENT_KEYS = {"key": str, "seed": int}
+#: What an attempt, hint or solution record holds besides its ``kind`` (type per key).
+_EVENT_KEYS = {"date": str, "key": str, "seed": int}
 _STATUSES = ("correct", "wrong", "invalid")
 #: What happened to each file in this session: what was set aside and why (for the report).
 _NOTICES = {}
@@ -41,13 +41,22 @@ def _number(x):
     return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
 
 
+def _lacking(record, types):
+    """The first key of `types` whose value in `record` is not of its type (a bool is no int),
+    as the reason; None when all are."""
+    for key, kind in types.items():
+        if not isinstance(record.get(key), kind) or isinstance(record.get(key), bool):
+            return f"it lacks a valid {key!r}"
+    return None
+
+
 def _exam_problem(exam):
     """Why `exam` is not a valid exam record; None if it is."""
     if not isinstance(exam, dict):
         return "it is not a record"
-    for key, kind in _EXAM_KEYS.items():
-        if not isinstance(exam.get(key), kind) or isinstance(exam.get(key), bool):
-            return f"it lacks a valid {key!r}"
+    lacking = _lacking(exam, _EXAM_KEYS)
+    if lacking is not None:
+        return lacking
     for chapter, pair in exam["score"].items():
         if not (chapter.isdigit() and isinstance(pair, list) and len(pair) == 2
                 and _number(pair[0]) and _plain_int(pair[1]) and 0 <= pair[0] <= pair[1]):
@@ -64,11 +73,9 @@ def _record_problem(record):
         return _exam_problem(record)
     if kind not in ("attempt", "hint", "solution"):
         return f"it is of no known kind ({str(kind)[:40]!r})"
-    if not isinstance(record.get("date"), str):
-        return "it lacks a valid 'date'"
-    for key, type_ in _EVENT_KEYS.items():
-        if not isinstance(record.get(key), type_) or isinstance(record.get(key), bool):
-            return f"it lacks a valid {key!r}"
+    lacking = _lacking(record, _EVENT_KEYS)
+    if lacking is not None:
+        return lacking
     if kind == "attempt":
         if record.get("status") not in _STATUSES:
             return "it lacks a valid 'status'"
@@ -139,6 +146,11 @@ def _from_version_1(raw):
         else:
             bad.append((f"exam {k}", reason, json.dumps(exam).encode()))
     return records, bad + [("version 1", "upgraded", None)]
+
+
+def _blank(raw):
+    """Whether a file's bytes hold nothing (an empty file is as good as none)."""
+    return not raw.strip(b"\x00 \n")
 
 
 def _stamp():
@@ -237,7 +249,7 @@ def _repair(file, notices):
             raw = _read_all(fd)
             records, bad = _lines_of(raw)
             if records is None:             # no progress file at all: set the whole aside
-                if not raw.strip(b"\x00 \n"):
+                if _blank(raw):
                     return []
                 target = _free_name(file, "corrupt")
                 os.replace(file, target)
@@ -274,7 +286,7 @@ def _load(file):
     records, bad = _lines_of(raw)
     if records is not None and not bad:
         return records, notices
-    if records is None and not raw.strip(b"\x00 \n"):
+    if records is None and _blank(raw):
         return [], notices                    # an empty file: as good as none
     try:
         repaired = _repair(file, notices)
@@ -320,11 +332,7 @@ def read_events(path=None):
     >>> [(e["kind"], e["key"], e["status"]) for e in read_events(file)]
     [('attempt', 'ch05.Outcodes', 'wrong')]
     """
-    file = progress_path(path)
-    records, notices = _load(file)
-    _remember(file, notices)
-    _warn(notices)
-    return records
+    return _read(path)
 
 
 def read_history(path=None):
@@ -353,11 +361,17 @@ def read_history(path=None):
     >>> [exam["score"] for exam in read_history(file)]
     [{'3': [1, 2]}]
     """
+    return [r for r in _read(path) if r.get("kind", "exam") == "exam"]
+
+
+def _read(path):
+    """The records of the progress file, with what happened to it remembered and warned of
+    (at the caller of the public reader)."""
     file = progress_path(path)
     records, notices = _load(file)
     _remember(file, notices)
-    _warn(notices)
-    return [r for r in records if r.get("kind", "exam") == "exam"]
+    _warn(notices, stacklevel=4)
+    return records
 
 
 def _remember(file, notices):
