@@ -40,6 +40,65 @@ def gap(a, b):
     return float(np.abs(a - b).max())
 
 
+def answer_key(value, decimals=6):
+    """A hashable form of an answer, to count the distinct variants among seeds.
+
+    Numbers are rounded to `decimals` (float noise is no new variant); words, lists of words
+    and sets stay what they are; a tuple is keyed part by part.
+    """
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (set, frozenset)):
+        return tuple(sorted(value))
+    if isinstance(value, tuple):
+        return tuple(answer_key(part, decimals) for part in value)
+    if isinstance(value, list) and value and isinstance(value[0], str):
+        return tuple(value)
+    return tuple(np.round(np.ravel(np.asarray(value, dtype=float)), decimals) + 0.0)
+
+
+def significant(x, digits=3):
+    """`x` rounded to `digits` significant digits, as a student writes it down."""
+    return float(f"{x:.{digits}g}")
+
+
+def wrong_answers(right, flips=False):
+    """Wrong answers near and far from `right`, and off in one part at a time.
+
+    With `flips` (answers of 0s and 1s) also the other value, in all parts and in each.
+    """
+    right = np.asarray(right, dtype=float)
+    answers = [right + 0.37, right + 1000.5, 2 * right + 1.3, -right - 0.71]
+    if flips and gap(1 - right, right) > SAME:
+        answers.append(1 - right)
+    for k in range(right.size if right.ndim else 0):
+        one = right.copy()
+        one[k] += 0.53
+        answers.append(one)
+        if flips:
+            other = right.copy()
+            other[k] = 1 - other[k]
+            if gap(other, right) > SAME:
+                answers.append(other)
+    return answers
+
+
+def advice_counts(exercises, solve, wrong):
+    """Every answer of ``wrong(ex, right)`` is wrong and ends with the exercise's advice at
+    most once (it used to be printed twice); returns (answers checked, answers advised), so
+    that a test can also ask that the advice is given at all."""
+    checked = advised = 0
+    for ex in exercises:
+        assert ex.advice
+        right, _ = solve(ex)
+        for answer in wrong(ex, right):
+            fb = ex.check(answer)
+            assert fb.status == "wrong", (ex, answer, fb)
+            assert fb.message.count(ex.advice) <= 1, (ex, answer, fb.message)
+            checked, advised = checked + 1, advised + (ex.advice in fb.message)
+    return checked, advised
+
+
 def variants(module, seeds=SEEDS):
     """``exercises(name, seeds)``: the variants of `module`'s exercise `name`, built once.
 

@@ -695,17 +695,6 @@ def test_indices_out_of_range_or_counted_from_one_are_named():
         assert ex.check(np.where(ids >= 0, ids + 1, -1)).diagnosis == "numbered from 1"
 
 
-def answer_key(value):
-    """A hashable form of an expected answer, to count the distinct ones."""
-    if value is None or isinstance(value, str):
-        return value
-    if isinstance(value, (set, frozenset)):
-        return tuple(sorted(value))
-    if isinstance(value, list) and value and isinstance(value[0], str):
-        return tuple(value)
-    return tuple(np.round(np.ravel(np.asarray(value, dtype=float)), 6))
-
-
 #: The fewest distinct answers among 300 seeds: 30, unless the answer has few values in itself:
 #: the number of Cohen-Sutherland intersections of one segment (1 to 4) and the number of
 #: z-buffer writes on a 4 x 4 screen (a count of at most 16 pixels per triangle, in practice
@@ -716,7 +705,7 @@ FEWEST_ANSWERS = {"CohenSutherlandIntersections": 4, "ZBufferWrites": 15}
 @pytest.mark.parametrize("name", SPECS)
 def test_seeds_give_many_different_answers(name):
     cls = getattr(ch05, name)
-    answers = {answer_key(cls(seed=seed).expected) for seed in range(300)}
+    answers = {harness.answer_key(cls(seed=seed).expected) for seed in range(300)}
     assert len(answers) >= FEWEST_ANSWERS.get(name, 30), (name, len(answers))
 
 

@@ -574,23 +574,9 @@ def unexplained(ex, right, form):
                                   "OptimalPosition", "WingedEdgeRecord", "OneRing"])
 def test_the_advice_ends_a_wrong_verdict_at_most_once(name):
     solve, form = SPECS[name]
-    advised = 0
-    for ex in exercises(name):
-        right, _ = solve(ex)
-        assert ex.advice
-        for wrong in unexplained(ex, right, form):
-            fb = ex.check(wrong)
-            assert fb.status == "wrong", (ex, wrong, fb)
-            assert fb.message.count(ex.advice) <= 1, (ex, wrong, fb.message)
-            advised += ex.advice in fb.message
+    _, advised = harness.advice_counts(exercises(name), solve,
+                                       lambda ex, right: unexplained(ex, right, form))
     assert advised >= harness.MIN_DIAGNOSED            # the advice is given, once
-
-
-def answer_key(value):
-    """A hashable form of an expected answer, to count the distinct ones."""
-    if isinstance(value, (str, tuple)):
-        return value
-    return tuple(np.round(np.ravel(np.asarray(value, dtype=float)), 6))
 
 
 #: The fewest distinct answers among 300 seeds. 30 unless the answer has few values in
@@ -602,5 +588,5 @@ FEWEST_ANSWERS = {"GenusFromCounts": 4, "Manifoldness": 4, "FlippedFace": 8}
 @pytest.mark.parametrize("name", SPECS)
 def test_seeds_give_many_different_answers(name):
     cls = getattr(ch06, name)
-    answers = {answer_key(cls(seed=seed).expected) for seed in range(300)}
+    answers = {harness.answer_key(cls(seed=seed).expected) for seed in range(300)}
     assert len(answers) >= FEWEST_ANSWERS.get(name, 30), (name, len(answers))

@@ -437,11 +437,6 @@ def test_zero_is_the_answer_of_the_boundary_case_only(name):
     assert len(zero_right) / len(variants) <= 0.20
 
 
-def answer_key(ex):
-    expected = ex.expected
-    return expected if isinstance(expected, str) else tuple(np.round(np.ravel(expected), 9))
-
-
 #: Distinct variants among 300 seeds: distinct right answers, or for a choice between three
 #: methods distinct statements (ShadingMethodChoice: 16 situations, several in a few settings).
 MIN_VARIANTS = 30
@@ -455,32 +450,12 @@ def test_enough_distinct_variants(name):
         assert len({phrase for ex in variants for phrase in SITUATIONS
                     if phrase in ex.situation}) == len(SITUATIONS) == 16
     else:
-        distinct = {answer_key(ex) for ex in variants}
+        distinct = {harness.answer_key(ex.expected, decimals=9) for ex in variants}
     assert len(distinct) >= MIN_VARIANTS, (name, len(distinct))
-
-
-def wrong_answers(right):
-    """Several wrong answers near and far from the right one, part by part too."""
-    right = np.asarray(right, dtype=float)
-    answers = [right + 0.37, right + 1000.5, 2 * right + 1.3, -right - 0.71]
-    if right.ndim:
-        for k in range(right.size):
-            one = right.copy()
-            one[k] += 0.53
-            answers.append(one)
-    return answers
 
 
 @pytest.mark.parametrize("name", [n for n in SPECS if SPECS[n][1] != "method"])
 def test_the_advice_is_given_at_most_once(name):
-    solve, _ = SPECS[name]
-    checked = shown = 0
-    for ex in exercises(name):
-        assert ex.advice
-        right, _ = solve(ex)
-        for answer in wrong_answers(right):
-            fb = ex.check(answer)
-            assert fb.status == "wrong", (ex, answer, fb)
-            assert fb.message.count(ex.advice) <= 1, (ex, answer, fb.message)
-            checked, shown = checked + 1, shown + (ex.advice in fb.message)
+    checked, shown = harness.advice_counts(exercises(name), SPECS[name][0],
+                                           lambda ex, right: harness.wrong_answers(right))
     assert shown >= checked // 2            # the advice is given, where no slip explains
