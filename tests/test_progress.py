@@ -324,22 +324,6 @@ print(json.dumps({"seeds": seeds, "warnings": [str(w.message) for w in caught],
 """
 
 
-def _read_only_file(file):
-    """A command prefix under which `file` alone is read-only (root too: a read-only bind
-    mount in a private mount namespace; otherwise its mode); None when that cannot be made."""
-    if os.geteuid() != 0:
-        file.chmod(0o444)
-        return ()
-    unshare = shutil.which("unshare")
-    if unshare is None:
-        return None
-    prefix = (unshare, "--mount", "sh", "-c",
-              'mount --bind -o ro "$0" "$0" && exec "$@"', str(file))
-    probe = subprocess.run([*prefix, "sh", "-c", 'echo x >> "$0"', str(file)],
-                           capture_output=True, text=True)
-    return prefix if probe.returncode != 0 and "Read-only" in probe.stderr else None
-
-
 def test_a_corrupt_file_in_a_read_only_folder_is_reported_not_raised(tmp_path):
     folder = tmp_path / "ro"
     folder.mkdir()
@@ -371,7 +355,7 @@ def test_a_read_only_progress_file_is_not_replaced_but_warned_about(tmp_path):
     progress.record_exam(record(1))
     before = file.read_bytes()
     (tmp_path / "tmp").mkdir()
-    prefix = _read_only_file(file)
+    prefix = _read_only(file)
     if prefix is None:
         pytest.skip("cannot make a read-only file here (root without unshare/mount)")
     try:
@@ -518,18 +502,21 @@ def test_with_home_in_a_copy_of_the_repository_the_exam_lands_in_an_ignored_fold
     assert _git(home, "check-ignore", "-q", str(expected), check=False).returncode == 0
 
 
-def _read_only(folder):
-    """A command prefix under which `folder` is read-only, for root as well (a bind mount in a
-    private mount namespace); None when this machine cannot make one."""
+def _read_only(path):
+    """A command prefix under which `path` (a folder, or a file alone) is read-only, for root
+    as well (a read-only bind mount in a private mount namespace; otherwise its mode); None
+    when this machine cannot make one."""
+    folder = path.is_dir()
     if os.geteuid() != 0:
-        folder.chmod(0o555)
+        path.chmod(0o555 if folder else 0o444)
         return ()
     unshare = shutil.which("unshare")
     if unshare is None:
         return None
     prefix = (unshare, "--mount", "sh", "-c",
-              'mount --bind -o ro "$0" "$0" && exec "$@"', str(folder))
-    probe = subprocess.run([*prefix, "sh", "-c", 'touch "$0/probe"', str(folder)],
+              'mount --bind -o ro "$0" "$0" && exec "$@"', str(path))
+    write = 'touch "$0/probe"' if folder else 'echo x >> "$0"'
+    probe = subprocess.run([*prefix, "sh", "-c", write, str(path)],
                            capture_output=True, text=True)
     return prefix if probe.returncode != 0 and "Read-only" in probe.stderr else None
 
