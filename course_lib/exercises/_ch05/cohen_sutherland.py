@@ -599,6 +599,18 @@ def _vec_exact(point):
     return latex_vector([float(v) for v in point])
 
 
+def _worked_passes(ex):
+    """``(ends, passes, steps)`` of a 2D Cohen-Sutherland exercise `ex`, worked by hand: the
+    clipped ends, the passes, and the steps of a worked solution up to the last pass."""
+    lo, hi = ex.box_min, ex.box_max
+    ends, passes = _passes_by_hand(ex.p0, ex.p1, lo, hi)
+    steps = [_clip_words(ex) + rf"; the segment runs from $p_0 = {_vec(ex.p0)}$ to "
+             rf"$p_1 = {_vec(ex.p1)}$."]
+    steps += _ends_on_side(ex.p0, ex.p1, lo, hi)
+    steps += [_pass_words(k, step, lo, hi) for k, step in enumerate(passes, 1)]
+    return ends, passes, steps
+
+
 def _pass_words(k, step, lo, hi):
     """The text of one pass of :func:`_passes_by_hand`."""
     c0, c1 = step["codes"]
@@ -745,12 +757,7 @@ class CohenSutherlandClip(_Boundary, _Listed):
         ]
 
     def worked(self):
-        lo, hi = self.box_min, self.box_max
-        ends, passes = _passes_by_hand(self.p0, self.p1, lo, hi)
-        steps = [_clip_words(self) + rf"; the segment runs from $p_0 = {_vec(self.p0)}$ to "
-                 rf"$p_1 = {_vec(self.p1)}$."]
-        steps += _ends_on_side(self.p0, self.p1, lo, hi)
-        steps += [_pass_words(k, step, lo, hi) for k, step in enumerate(passes, 1)]
+        ends, passes, steps = _worked_passes(self)
         answer = np.array([[float(v) for v in e] for e in ends])
         steps.append(rf"What remains runs from ${latex_vector(answer[0])}$ to "
                      rf"${latex_vector(answer[1])}$.")
@@ -876,12 +883,7 @@ class CohenSutherlandIntersections(_Boundary, DrawnExercise):
         ]
 
     def worked(self):
-        lo, hi = self.box_min, self.box_max
-        _, passes = _passes_by_hand(self.p0, self.p1, lo, hi)
-        steps = [_clip_words(self) + rf"; the segment runs from $p_0 = {_vec(self.p0)}$ to "
-                 rf"$p_1 = {_vec(self.p1)}$."]
-        steps += _ends_on_side(self.p0, self.p1, lo, hi)
-        steps += [_pass_words(k, step, lo, hi) for k, step in enumerate(passes, 1)]
+        _, passes, steps = _worked_passes(self)
         cuts = sum(step["action"] == "clip" for step in passes)
         steps.append(rf"{len(passes)} passes, of which the last only tests: **{cuts}** "
                      r"intersections.")
