@@ -375,9 +375,11 @@ def _read(path):
 
 
 def _remember(file, notices):
-    """Keep what happened to `file` in this session, for :func:`progress_report`."""
+    """Keep what happened to `file` in this session, for :func:`progress_report`; returns
+    `notices`."""
     kept = _NOTICES.setdefault(file, [])
     kept.extend(n for n in notices if n not in kept)
+    return notices
 
 
 # ---------------------------------------------------------------------------------------------
@@ -451,7 +453,8 @@ def _append(file, record, durable, notices, private=False):
 def _save(record, path, durable):
     """Append `record` to the progress file; on failure to the session's temporary file.
 
-    Returns ``(file or None, notices)``; never raises OSError.
+    Returns the notices (where it went instead, or that it could not be saved), which are
+    also remembered for the report of the progress file; never raises OSError.
     """
     file, note, chosen = _locate(path)
     notices = []
@@ -459,7 +462,7 @@ def _save(record, path, durable):
     if note is None:
         try:
             _append(file, record, durable, notices)
-            return file, notices
+            return _remember(file, notices)
         except OSError as exc:
             tried.append(f"{file} (chosen by {chosen}) cannot be written: "
                          f"{exc.strerror or exc}")
@@ -470,19 +473,19 @@ def _save(record, path, durable):
     spare = _where._temporary_file()
     if spare == file and tried and note is None:
         notices.append(f"Your result could not be saved: {tried[0]}; {_keep_hint()}.")
-        return None, notices
+        return _remember(file, notices)
     try:
         _append(spare, record, durable, notices, private=True)
     except OSError as exc:
         notices.append(f"Your result could not be saved: {'; '.join(tried)}, and the temporary "
                        f"file {spare} cannot be written either ({exc.strerror or exc}); "
                        f"{_keep_hint()}.")
-        return None, notices
+        return _remember(file, notices)
     reason = tried[0]
     notices.append(f"{reason[0].upper()}{reason[1:]}, so this result was saved to {spare}, a "
                    "temporary file for this session only (it may be lost when the server "
                    f"stops): {_keep_hint()}.")
-    return spare, notices
+    return _remember(file, notices)
 
 
 def _as_record(result):
@@ -555,9 +558,7 @@ def record_exam(result, path=None, when=None):
     reason = _exam_problem(record)
     if reason is not None:
         raise ValueError(f"result is not an exam record: {reason}")
-    file, notices = _save(record, path, durable=True)
-    _remember(progress_path(path), notices)
-    _warn(notices, stacklevel=2)
+    _warn(_save(record, path, durable=True), stacklevel=2)
     return record
 
 
@@ -605,9 +606,7 @@ def record_event(kind, key, seed, path=None, when=None, **fields):
     reason = _record_problem(record)
     if reason is not None:
         raise ValueError(f"not a valid {kind} record: {reason}")
-    _, notices = _save(record, path, durable=False)
-    _remember(progress_path(path), notices)
-    _warn(notices, stacklevel=2)
+    _warn(_save(record, path, durable=False), stacklevel=2)
     return record
 
 
