@@ -439,10 +439,11 @@ class DrawnExercise(Exercise):
     def _rounded(self, answer):
         """The "close: give more digits" verdict when `answer` is the expected one rounded to
         too few digits (and matches no anticipated mistake); None otherwise. Tried before any
-        other diagnosis, whatever the answer form."""
+        other diagnosis of a form of the exercise's own (the ``diagnose_*`` functions of the
+        other forms make the same check themselves)."""
         expected = getattr(self, "expected", None)
-        if expected is None or _is_whole(expected) or _has_bool(answer) \
-                or hasattr(self, "_parts"):    # several numbers: judged part by part
+        if self.answer_form != "custom" or expected is None or _is_whole(expected) \
+                or _has_bool(answer) or hasattr(self, "_parts"):  # parts: judged one by one
             return None
         value, right = read_floats(answer), read_floats(expected)
         if value is None or right is None or right.dtype.kind != "f":
