@@ -277,6 +277,71 @@ def test_light_visibility_removes_only_that_lights_diffuse_and_specular():
     np.testing.assert_allclose(dark.total, 0.1 + 0.05)
 
 
+def test_separate_light_colours_feed_each_term_their_own_colour():
+    """A light with ambient, diffuse and specular colours, against the model typed out: each
+    term takes its own colour channel by channel; the light's ambient part is attenuated but
+    neither shadowed nor switched off behind the surface."""
+    rng = np.random.default_rng(4)
+    points = rng.uniform(-1, 1, (50, 3)) * [1, 1, 0]
+    normals = np.tile([0.0, 0.0, 1.0], (50, 1))
+    eye = np.array([0.3, -0.2, 3.0])
+    pos = np.array([0.5, 0.4, 2.0])
+    ia, idf, isp = np.array([0.2, 0.1, 0.05]), np.array([1.0, 0.6, 0.2]), np.array([0.3, 0.9, 1.0])
+    mat = S.Material(ka=(0.5, 0.4, 0.3), kd=(0.6, 0.5, 0.4), ks=(0.3, 0.2, 0.1), shininess=7)
+    abc = (1.0, 0.2, 0.1)
+    light = S.point_light(pos, attenuation=abc, ambient=ia, diffuse=idf, specular=isp)
+    vis = rng.uniform(0, 1, (50, 1))
+    got = S.phong(points, normals, eye - points, light, mat, ambient=0.1, light_visibility=vis)
+    for k in range(50):
+        to = pos - points[k]
+        d = np.sqrt(to @ to)
+        L, n = to / d, normals[k]
+        V = (eye - points[k]) / np.linalg.norm(eye - points[k])
+        R = 2 * (n @ L) * n - L
+        f = 1 / (abc[0] + abc[1] * d + abc[2] * d * d)
+        ambient = np.array(mat.ka) * (0.1 + f * ia)
+        diffuse = f * vis[k, 0] * np.array(mat.kd) * idf * max(n @ L, 0)
+        specular = f * vis[k, 0] * np.array(mat.ks) * isp * max(R @ V, 0) ** 7
+        assert np.allclose(got.ambient[k], ambient, atol=1e-12)
+        assert np.allclose(got.diffuse[k], diffuse, atol=1e-12)
+        assert np.allclose(got.specular[k], specular, atol=1e-12)
+        assert np.allclose(got.total[k], ambient + diffuse + specular, atol=1e-12)
+    # behind the surface: no diffuse or specular, the light's ambient part stays
+    below = S.phong(points, -normals, [0, 0, 1], light, mat, ambient=0.0)
+    assert np.all(below.diffuse == 0) and np.all(below.specular == 0)
+    assert np.all(below.ambient > 0)
+
+
+def test_one_intensity_is_the_same_light_as_equal_separate_colours():
+    rng = np.random.default_rng(5)
+    p = rng.uniform(-1, 1, (30, 3))
+    n = rng.normal(size=(30, 3))
+    v = rng.normal(size=(30, 3))
+    m = S.Material(ka=0.2, kd=0.5, ks=0.3, shininess=12)
+    for make in (lambda **kw: S.point_light([0.2, 0.1, 3.0], attenuation=(1, 0.1, 0.05), **kw),
+                 lambda **kw: S.directional_light([0.3, 0.2, 1.0], **kw)):
+        one = S.phong(p, n, v, make(intensity=(0.9, 0.7, 0.4)), m, two_sided=True)
+        three = S.phong(p, n, v, make(intensity=5.0, diffuse=(0.9, 0.7, 0.4),
+                                      specular=(0.9, 0.7, 0.4), ambient=0.0), m, two_sided=True)
+        for a, b in zip(one, three):
+            assert np.array_equal(a, b)
+        blinn_one = S.blinn_phong(p, n, v, make(intensity=0.8), m, two_sided=True)
+        blinn_three = S.blinn_phong(p, n, v, make(diffuse=0.8, specular=0.8), m, two_sided=True)
+        assert np.array_equal(blinn_one.total, blinn_three.total)
+
+
+@pytest.mark.parametrize("field, value, message", [
+    ("diffuse", (1, -0.1, 0), "diffuse must not be negative"),
+    ("specular", (1, 1), "specular must be one number or one RGB triple"),
+    ("ambient", np.nan, "ambient"),
+])
+def test_bad_light_colours_are_named(field, value, message):
+    with pytest.raises(ValueError, match=message):
+        S.point_light([0, 0, 1], **{field: value})
+    with pytest.raises(ValueError, match=message):
+        S.directional_light([0, 0, 1], **{field: value})
+
+
 def test_two_sided_flips_normals_towards_the_viewer():
     light = S.directional_light([0, 0, 1])
     back = S.phong(None, [0, 0, -1], [0, 0, 1], light, S.Material())

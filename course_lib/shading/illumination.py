@@ -98,6 +98,7 @@ def _illuminate(points, normals, view, lights, material, ambient, light_visibili
     diffuse = np.zeros(shape)
     specular = np.zeros(shape)
     for j, light in enumerate(lights):
+        light_ambient, light_diffuse, light_specular = light.colours()
         if light.position is None:
             l_dir = np.broadcast_to(light.direction, n.shape)
             strength = np.ones(())
@@ -110,6 +111,8 @@ def _illuminate(points, normals, view, lights, material, ambient, light_visibili
             l_dir = to_light / dist[..., None]
             a, b, c = light.attenuation
             strength = 1.0 / (a + b * dist + c * dist * dist)
+        if np.any(light_ambient > 0):        # attenuated, never shadowed: it is indirect light
+            amb = amb + ka * light_ambient * np.asarray(strength)[..., None]
         if vis is not None:
             strength = strength * vis[..., j]
         n_dot_l = _dot(n, l_dir)
@@ -123,13 +126,14 @@ def _illuminate(points, normals, view, lights, material, ambient, light_visibili
             r = 2.0 * n_dot_l[..., None] * n - l_dir
             cos_spec = _dot(r, v)
         spec = np.where(lit, np.maximum(cos_spec, 0.0) ** shin, 0.0)
-        incoming = light.intensity * np.asarray(strength)[..., None]
-        diffuse = diffuse + kd * incoming * np.maximum(n_dot_l, 0.0)[..., None]
-        specular = specular + ks * incoming * spec[..., None]
+        weight = np.asarray(strength)[..., None]
+        diffuse = diffuse + kd * light_diffuse * weight * np.maximum(n_dot_l, 0.0)[..., None]
+        specular = specular + ks * light_specular * weight * spec[..., None]
+    amb = np.broadcast_to(amb, shape)
     diffuse = np.broadcast_to(diffuse, shape)
     specular = np.broadcast_to(specular, shape)
     total = emission + amb + diffuse + specular
-    return PhongTerms(total, emission, amb, np.array(diffuse), np.array(specular))
+    return PhongTerms(total, emission, np.array(amb), np.array(diffuse), np.array(specular))
 
 
 def phong(points, normals, view, lights, material=Material(), ambient=1.0,
@@ -144,6 +148,17 @@ def phong(points, normals, view, lights, material=Material(), ambient=1.0,
     and every product taken per RGB channel. All inputs broadcast over leading axes: one call
     shades a whole image or all the hits of a ray tracer.
 
+    A light with **separate colours** (``point_light(..., ambient=, diffuse=, specular=)``, see
+    :class:`Light`) feeds each term its own colour:
+
+    .. math:: I = I_e + k_a \Big(I_a + \sum_l f_{att}(d_l) I_{a,l}\Big) + \sum_l f_{att}(d_l)
+              \, v_l \left[k_d I_{d,l} \max(N \cdot L_l, 0) + k_s I_{s,l}
+              \max(R_l \cdot V, 0)^n\right]
+
+    The light's ambient part :math:`I_{a,l}` is attenuated with distance like the rest (as in
+    OpenGL) but is not removed by shadows or by the light facing away: it stands for light the
+    lamp spreads around the scene, arriving from every direction.
+
     Parameters
     ----------
     points : array_like, shape (..., 3), or None
@@ -155,7 +170,8 @@ def phong(points, normals, view, lights, material=Material(), ambient=1.0,
         Directions from the points *towards the viewer*, :math:`V` (normalized here): e.g.
         :func:`view_directions` for an eye position, or ``-ray_directions`` in a ray tracer.
     lights : Light or sequence of Light
-        :func:`point_light` and :func:`directional_light` objects.
+        :func:`point_light` and :func:`directional_light` objects, of one intensity or with
+        separate ambient, diffuse and specular colours.
     material : Material, optional
         Coefficients, one set or per-point arrays (:func:`material_per_point`).
     ambient : float or array_like, shape (3,) or (..., 3) or (..., 1), optional
@@ -199,6 +215,14 @@ def phong(points, normals, view, lights, material=Material(), ambient=1.0,
     >>> t = phong([0, 0, 0], [0, 0, 1], [0, 0, 1], lights, colored_material((1, 0, 0)))
     >>> np.round(t.total, 6)
     array([1. , 0.2, 0.2])
+
+    A lamp with a warm diffuse colour, a white highlight and a little ambient light of its own,
+    on a grey material (ka = 0.2, kd = 0.5, ks = 0.4), seen along the normal under it:
+
+    >>> lamp = point_light([0, 0, 2], diffuse=(1, 0.5, 0), specular=1, ambient=0.5)
+    >>> grey = Material(ka=0.2, kd=0.5, ks=0.4)
+    >>> np.round(phong([0, 0, 0], [0, 0, 1], [0, 0, 1], lamp, grey, ambient=0).total, 6)
+    array([1.  , 0.75, 0.5 ])
     """
     return _illuminate(points, normals, view, lights, material, ambient, light_visibility,
                        two_sided, blinn=False)

@@ -154,9 +154,17 @@ def material_per_point(materials, ids):
 
 
 class Light(NamedTuple):
-    """A light source: a point light (``position``) or a directional light (``direction``).
+    r"""A light source: a point light (``position``) or a directional light (``direction``).
 
     Build it with :func:`point_light` or :func:`directional_light`.
+
+    **Separate colours** (the textbook's light model, as in OpenGL's fixed pipeline): a light
+    may give a different colour to each term it feeds. ``diffuse`` :math:`I_{d,l}` multiplies
+    :math:`k_d (N \cdot L)`, ``specular`` :math:`I_{s,l}` multiplies :math:`k_s (R \cdot V)^n`,
+    and ``ambient`` :math:`I_{a,l}` adds :math:`k_a I_{a,l}` to the ambient term (light the lamp
+    spreads around the room, arriving from everywhere). Both ``diffuse`` and ``specular``
+    default to ``intensity``, and ``ambient`` to 0, so a light built with one intensity behaves
+    as the single-colour model :math:`I_l [k_d (N \cdot L) + k_s (R \cdot V)^n]`.
 
     Attributes
     ----------
@@ -165,19 +173,48 @@ class Light(NamedTuple):
     direction : ndarray, shape (3,), or None
         For a directional light: the unit vector *towards* the light (the L of every point).
     intensity : ndarray, shape (3,)
-        The light's RGB intensity :math:`I_l` (may exceed 1 for a bright light).
+        The light's RGB intensity :math:`I_l` (may exceed 1 for a bright light): the default of
+        ``diffuse`` and ``specular``.
     attenuation : tuple of float
         :math:`(a, b, c)` of :math:`f_{att}(d) = 1/(a + b d + c d^2)`.
+    ambient : ndarray, shape (3,)
+        :math:`I_{a,l}`, the light's contribution to the ambient light (default 0).
+    diffuse : ndarray, shape (3,), or None
+        :math:`I_{d,l}`, the colour of the diffuse light (None: ``intensity``).
+    specular : ndarray, shape (3,), or None
+        :math:`I_{s,l}`, the colour of the highlight (None: ``intensity``).
 
     Examples
     --------
     >>> point_light([0, 5, 0]).position
     array([0., 5., 0.])
+    >>> lamp = point_light([0, 5, 0], diffuse=(1, 0.8, 0.6), specular=1, ambient=0.05)
+    >>> lamp.diffuse, lamp.specular, lamp.ambient
+    (array([1. , 0.8, 0.6]), array([1., 1., 1.]), array([0.05, 0.05, 0.05]))
     """
     position: object
     direction: object
     intensity: np.ndarray
     attenuation: tuple
+    ambient: object = np.zeros(3)
+    diffuse: object = None
+    specular: object = None
+
+    def colours(self):
+        """The light's (ambient, diffuse, specular) RGB colours, the defaults filled in.
+
+        Examples
+        --------
+        >>> [c.tolist() for c in directional_light([0, 0, 1], intensity=0.5).colours()]
+        [[0.0, 0.0, 0.0], [0.5, 0.5, 0.5], [0.5, 0.5, 0.5]]
+        """
+        intensity = _light_colour(self.intensity, "intensity")
+        ambient = _light_colour(self.ambient, "ambient")
+        diffuse = _light_colour(self.diffuse, "diffuse")
+        specular = _light_colour(self.specular, "specular")
+        return (np.zeros(3) if ambient is None else ambient,
+                intensity if diffuse is None else diffuse,
+                intensity if specular is None else specular)
 
 
 def _attenuation_coefficients(value):
@@ -188,7 +225,20 @@ def _attenuation_coefficients(value):
     return tuple(abc.tolist())
 
 
-def point_light(position, intensity=1.0, attenuation=(1.0, 0.0, 0.0)):
+def _light_colour(value, name):
+    """One light colour: a non-negative number or RGB triple, as shape (3,); None stays None."""
+    if value is None:
+        return None
+    c = as_rgb(value, name, maximum=None)
+    if c.size == 1:
+        c = np.full(3, float(c.reshape(-1)[0]))
+    if c.shape != (3,):
+        raise ValueError(f"{name} must be one number or one RGB triple, got shape {c.shape}")
+    return c
+
+
+def point_light(position, intensity=1.0, attenuation=(1.0, 0.0, 0.0), *, ambient=0.0,
+                diffuse=None, specular=None):
     r"""A point light at `position`, of RGB `intensity`, attenuated with distance.
 
     Parameters
@@ -199,6 +249,9 @@ def point_light(position, intensity=1.0, attenuation=(1.0, 0.0, 0.0)):
     attenuation : (float, float, float)
         :math:`(a, b, c)`, all non-negative and not all zero: :math:`f_{att}(d) = 1/(a + b d +
         c d^2)` (default (1, 0, 0): none).
+    ambient, diffuse, specular : float or array_like, shape (3,), optional
+        Separate colours for the three terms (see :class:`Light`): ``diffuse`` and ``specular``
+        default to `intensity`, ``ambient`` to 0.
 
     Returns
     -------
@@ -215,15 +268,13 @@ def point_light(position, intensity=1.0, attenuation=(1.0, 0.0, 0.0)):
     >>> light.intensity, light.attenuation
     (array([1. , 1. , 0.5]), (1.0, 0.0, 0.1))
     """
-    intensity = as_rgb(intensity, "intensity", maximum=None)
-    if intensity.shape != (3,):
-        raise ValueError(f"intensity must be one number or one RGB triple, got shape "
-                         f"{intensity.shape}")
+    intensity = _light_colour(intensity, "intensity")
     return Light(as_vector(position, "position", 3), None, intensity,
-                 _attenuation_coefficients(attenuation))
+                 _attenuation_coefficients(attenuation), _light_colour(ambient, "ambient"),
+                 _light_colour(diffuse, "diffuse"), _light_colour(specular, "specular"))
 
 
-def directional_light(towards, intensity=1.0):
+def directional_light(towards, intensity=1.0, *, ambient=0.0, diffuse=None, specular=None):
     """A directional light (infinitely far away, like the sun): the same L at every point.
 
     Parameters
@@ -232,6 +283,8 @@ def directional_light(towards, intensity=1.0):
         The direction from the surface *towards* the light (normalized here); e.g. (0, 1, 0)
         for a light straight above. (The light travels along ``-towards``.)
     intensity : float or array_like, shape (3,)
+    ambient, diffuse, specular : float or array_like, shape (3,), optional
+        Separate colours for the three terms, as :func:`point_light`.
 
     Returns
     -------
@@ -247,12 +300,10 @@ def directional_light(towards, intensity=1.0):
     >>> directional_light([0, 0, 2]).direction
     array([0., 0., 1.])
     """
-    intensity = as_rgb(intensity, "intensity", maximum=None)
-    if intensity.shape != (3,):
-        raise ValueError(f"intensity must be one number or one RGB triple, got shape "
-                         f"{intensity.shape}")
+    intensity = _light_colour(intensity, "intensity")
     return Light(None, _unit(as_vector(towards, "towards", 3), "towards"), intensity,
-                 (1.0, 0.0, 0.0))
+                 (1.0, 0.0, 0.0), _light_colour(ambient, "ambient"),
+                 _light_colour(diffuse, "diffuse"), _light_colour(specular, "specular"))
 
 
 def attenuation(distance, a=1.0, b=0.0, c=0.0):
