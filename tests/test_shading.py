@@ -332,7 +332,8 @@ def test_one_intensity_is_the_same_light_as_equal_separate_colours():
 
 @pytest.mark.parametrize("field, value, message", [
     ("diffuse", (1, -0.1, 0), "diffuse must not be negative"),
-    ("specular", (1, 1), "specular must be one number or one RGB triple"),
+    ("specular", (1, 1), "specular must be a number"),
+    ("diffuse", [[1, 1, 1], [0, 0, 0]], "diffuse must be one number or one RGB triple"),
     ("ambient", np.nan, "ambient"),
 ])
 def test_bad_light_colours_are_named(field, value, message):
