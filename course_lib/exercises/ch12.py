@@ -38,6 +38,7 @@ from ._ch12.phong import (BlinnPhongHighlight, DiffuseTerm, DistanceAttenuation,
                           SeveralLights, SpecularTerm)
 from ._ch12.interpolation import SHADING_METHODS, GouraudVersusPhong, ShadingMethodChoice
 from ._ch12.ambient_occlusion import AmbientOcclusionSamples, AmbientOcclusionWall
+from ._ch12.light_colours import PhongLightColours
 
 __all__ = [
     "EXERCISES",
@@ -48,6 +49,7 @@ __all__ = [
     "DiffuseTerm",
     "DistanceAttenuation",
     "GouraudVersusPhong",
+    "PhongLightColours",
     "PhongTotal",
     "ReflectionVector",
     "SeveralLights",
@@ -64,6 +66,7 @@ EXERCISES = (
     BlinnPhongHighlight,
     DistanceAttenuation,
     SeveralLights,
+    PhongLightColours,
     ShadingMethodChoice,
     GouraudVersusPhong,
     AmbientOcclusionSamples,
