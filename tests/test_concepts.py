@@ -580,6 +580,89 @@ def test_fact_ch12_phong_terms():
     assert math.isclose(n @ h, 1.0)
 
 
+def test_fact_ch12_radiometry():
+    """Inverse square, the steradian count of the sphere and the constancy of radiance, from
+    first principles with scipy's numerical integration."""
+    from scipy.integrate import dblquad
+    assert "quarter" in answer_text("ch12-inverse-square")
+    # irradiance under a small lamp of intensity I: E = I / d^2, the flux through a small disk
+    # of the desk over its area
+    I, a = 3.0, 1e-3
+    for d in (1.0, 2.0):
+        flux = dblquad(lambda r, phi: I * d / (d * d + r * r) ** 1.5 * r, 0, 2 * np.pi, 0, a)[0]
+        E = flux / (np.pi * a * a)
+        assert math.isclose(E, I / d**2, rel_tol=1e-5)
+    assert "4\\pi" in answer_text("ch12-solid-angle-unit")
+    sphere = dblquad(lambda theta, phi: np.sin(theta), 0, 2 * np.pi, 0, np.pi)[0]
+    assert math.isclose(sphere, 4 * np.pi, rel_tol=1e-12)
+    # a square emitter of side s, radiance L, seen along its normal from d: the flux on a unit
+    # receiver falls like 1/d^2, the solid angle too, and their ratio (the radiance) stays L
+    assert truth("ch12-radiance-distance")
+    L, side = 2.0, 0.01
+    ratios = []
+    for d in (1.0, 3.0):
+        cos4 = lambda y, x: d**2 / (x * x + y * y + d * d) ** 2     # cos_s cos_l / r^2
+        E = L * dblquad(cos4, -side / 2, side / 2, -side / 2, side / 2)[0]
+        omega = dblquad(lambda y, x: d / (x * x + y * y + d * d) ** 1.5, -side / 2, side / 2,
+                        -side / 2, side / 2)[0]
+        ratios.append(E / omega)
+    assert np.allclose(ratios, L, rtol=1e-4)
+
+
+def test_fact_ch12_brdfs():
+    from scipy.integrate import dblquad
+    hemisphere = lambda f: dblquad(lambda t, p: f(t, p) * np.cos(t) * np.sin(t), 0, 2 * np.pi,
+                                   0, np.pi / 2)[0]
+    assert "1/sr" in answer_text("ch12-brdf-definition")
+    rho = 0.7
+    assert answer_text("ch12-lambert-brdf") == "$\\rho / \\pi$"
+    assert math.isclose(hemisphere(lambda t, p: rho / np.pi), rho, rel_tol=1e-10)
+    assert hemisphere(lambda t, p: rho / (2 * np.pi)) < rho < hemisphere(lambda t, p: rho)
+    # Phong normalisation at normal incidence: alpha = theta
+    assert "2\\pi/(n+2)" in answer_text("ch12-phong-normalisation")
+    for n in (1, 10, 50):
+        raw = hemisphere(lambda t, p: np.cos(t) ** n)
+        assert math.isclose(raw, 2 * np.pi / (n + 2), rel_tol=1e-8)
+        assert math.isclose((n + 2) / (2 * np.pi) * raw, 1.0, rel_tol=1e-8)
+    # reciprocity: modified Phong cos^n(alpha) is symmetric; the original one is not
+    assert truth("ch12-reciprocity")
+    nrm = np.array([0.0, 0.0, 1.0])
+    l, v = RNG.normal(size=(2, 200, 3))
+    l[:, 2], v[:, 2] = np.abs(l[:, 2]) + 0.1, np.abs(v[:, 2]) + 0.1
+    l /= np.linalg.norm(l, axis=1, keepdims=True)
+    v /= np.linalg.norm(v, axis=1, keepdims=True)
+    cos_alpha = lambda a, b: np.clip(np.sum((2 * a[:, 2:3] * nrm - a) * b, axis=1), 0, None)
+    assert np.allclose(cos_alpha(l, v) ** 8, cos_alpha(v, l) ** 8)
+    original = lambda a, b: cos_alpha(a, b) ** 8 / a[:, 2]
+    assert not np.allclose(original(l, v), original(v, l))
+    # Fresnel for glass (n = 1.5), unpolarised, from Fresnel's equations typed here
+    def fresnel(theta, eta=1.5):
+        st = np.sin(theta) / eta
+        ct = np.sqrt(1 - st * st)
+        ci = np.cos(theta)
+        rs = (ci - eta * ct) / (ci + eta * ct)
+        rp = (eta * ci - ct) / (eta * ci + ct)
+        return 0.5 * (rs * rs + rp * rp)
+    assert "rises towards 1" in answer_text("ch12-fresnel-grazing")
+    assert math.isclose(fresnel(0.0), 0.04, rel_tol=1e-12)
+    assert fresnel(np.radians(89.9)) > 0.98
+    assert np.all(np.diff(fresnel(np.radians(np.linspace(60, 89.9, 50)))) > 0)
+
+
+def test_fact_ch12_light_colours():
+    from course_lib import shading
+    assert answer_text("ch12-light-colours").startswith("Red, with a white highlight")
+    # the model typed out: white k_d, grey k_s under a red diffuse, white specular light
+    kd, ks, Id, Is = np.ones(3), 0.5, np.array([1.0, 0, 0]), np.ones(3)
+    diffuse = kd * Id * 0.8
+    highlight = ks * Is * 1.0
+    assert diffuse[1] == diffuse[2] == 0 and np.ptp(highlight) == 0
+    lamp = shading.directional_light([0.6, 0, 0.8], diffuse=Id, specular=Is)
+    t = shading.phong(None, [0, 0, 1], [-0.6, 0, 0.8], lamp,
+                      shading.Material(ka=0, kd=1, ks=ks, shininess=10))
+    assert np.allclose(t.diffuse, diffuse) and np.allclose(t.specular, highlight)
+
+
 def test_fact_ch14_barycentric_and_mipmap():
     from shapely.geometry import Polygon
     assert truth("ch14-barycentric-sum")
