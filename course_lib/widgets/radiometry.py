@@ -151,7 +151,7 @@ class RadiometryExplorer(Explorer):
         ax_patch = self.fig.add_axes((0.80, 0.15, 0.19, 0.7))
         self.image = ax_map.imshow(s["irradiance"], origin="lower", cmap="inferno", vmin=0,
                                    vmax=VMAX, extent=(-EXTENT, EXTENT, -EXTENT, EXTENT),
-                                   interpolation="bilinear")
+                                   interpolation="nearest")
         self.fig.colorbar(self.image, cax=self.fig.add_axes((0.29, 0.15, 0.012, 0.7)),
                           extend="max", label="E [W/m²]")
         ax_map.axhline(0, color="w", lw=0.6, ls=":")

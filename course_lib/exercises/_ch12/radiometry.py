@@ -124,10 +124,12 @@ class PointLightIrradiance(_Boundary, DrawnExercise):
                        rf"$\theta = {self.theta_deg}^\circ$ with the surface normal.")
             names = ("kind", "I", "d", "theta_deg")
         else:
+            where = (r"lies directly below the light ($x = 0$)." if self.x == 0 else
+                     rf"lies $x = {_num(self.x)}$ m away horizontally from the foot of the "
+                     r"light.")
             setting = (rf"An isotropic point light of intensity $I = {_num(self.I)}$ W/sr hangs "
                        rf"$h = {_num(self.h)}$ m above a horizontal floor. A point on the floor "
-                       rf"lies $x = {_num(self.x)}$ m away horizontally from the foot of the "
-                       r"light.")
+                       + where)
             names = ("kind", "I", "x", "h")
         return (setting + r" Compute the irradiance $E$ at the point, in W/m²." "\n\n"
                 + _ONE_NUMBER + "\n\n" + data_note(*names))
