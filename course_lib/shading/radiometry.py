@@ -97,7 +97,7 @@ def _angles(value, name, low, high, what):
     return v
 
 
-def _polygon(vertices, name="vertices"):
+def _planar_polygon(vertices, name="vertices"):
     """A planar polygon (n, 3), n >= 3, and its unit normal (right-hand rule) and area."""
     v = as_points(vertices, name, dims=3)
     if v.ndim != 2 or v.shape[0] < 3:
@@ -253,7 +253,7 @@ def polygon_solid_angle(vertices, points):
     >>> round(float(polygon_solid_angle(face, [0, 0, 0]) / (4 * np.pi / 6)), 12)
     1.0
     """
-    v, normal, _ = _polygon(vertices)
+    v, normal, _ = _planar_polygon(vertices)
     p = as_points(points, "points", dims=3)
     rel = v - p[..., None, :]                                 # (..., n, 3)
     _reject_points_on(rel, normal, v, "points")
@@ -505,7 +505,7 @@ def polygon_light_irradiance(points, normals, vertices, radiance):
     """
     p = as_points(points, "points", dims=3)
     n = _unit(normals, "normals")
-    v, nl, _ = _polygon(vertices)
+    v, nl, _ = _planar_polygon(vertices)
     L = as_scalar(radiance, "radiance")
     if L < 0:
         raise ValueError(f"radiance must be zero or positive (the light's radiance in "
