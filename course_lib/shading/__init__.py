@@ -99,6 +99,9 @@ this section empty.)
 Files
 -----
 
+``radiometry.py``
+    Chapter 12 (lesson section 1): radiometric quantities, solid angles, irradiance from point
+    and area lights.
 ``materials.py``
     Chapter 12 (lesson section 2.1): materials and light sources of the local illumination
     model.
@@ -124,6 +127,10 @@ from .interpolated import (BarycentricBuffers, ShadedImage, barycentric_buffers,
     render_shaded, uv_sphere, vertex_normals)
 from .occlusion import (AmbientOcclusion, HeightField, ambient_occlusion,
     ambient_occlusion_closed_form, cosine_sample_hemisphere)
+from .radiometry import (QUANTITIES, PointIrradiance, Quantity, cone_solid_angle,
+    emitter_intensity, isotropic_intensity, lambertian_exitance, lambertian_radiance,
+    patch_solid_angle, point_light_irradiance, polygon_light_irradiance, polygon_solid_angle,
+    small_light_irradiance, spherical_region_solid_angle)
 
 __all__ = [
     "AmbientOcclusion",
@@ -151,4 +158,18 @@ __all__ = [
     "uv_sphere",
     "vertex_normals",
     "view_directions",
+    "QUANTITIES",  # radiometry
+    "PointIrradiance",  # radiometry
+    "Quantity",  # radiometry
+    "cone_solid_angle",  # radiometry
+    "emitter_intensity",  # radiometry
+    "isotropic_intensity",  # radiometry
+    "lambertian_exitance",  # radiometry
+    "lambertian_radiance",  # radiometry
+    "patch_solid_angle",  # radiometry
+    "point_light_irradiance",  # radiometry
+    "polygon_light_irradiance",  # radiometry
+    "polygon_solid_angle",  # radiometry
+    "small_light_irradiance",  # radiometry
+    "spherical_region_solid_angle",  # radiometry
 ]
