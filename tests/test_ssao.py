@@ -51,7 +51,7 @@ def test_g_buffer_positions_are_the_unprojected_pixel_centres():
     n = 40
     gb = shading.g_buffer(scene.vertices, scene.faces, scene.view, scene.projection, n, n)
     # the ray through pixel (i, j) in eye space: (x_ndc tan(fov/2) aspect, y_ndc tan(fov/2), -1)
-    t = np.tan(np.radians(50) / 2)
+    t = np.tan(np.radians(55) / 2)
     x = ((np.arange(n) + 0.5) * 2 / n - 1) * t
     y = ((np.arange(n) + 0.5) * 2 / n - 1) * t
     X, Y = np.meshgrid(x, y)

@@ -341,20 +341,24 @@ def ssao(positions, normals, projection, mask=None, radius=0.5, samples=16, bias
     angles = 2 * np.pi * rng.random((ns, ns)) if ns > 1 else np.zeros((1, 1))
     a = angles[idx[0] % ns, idx[1] % ns][:, None]
     t, bt = np.cos(a) * t + np.sin(a) * bt, -np.sin(a) * t + np.cos(a) * bt
+    # clip x, y, w and view z are linear in Q = P + R (kx T + ky B + kz N): project P, T, B
+    # and N once, then each sample is three multiply-adds
+    lin = np.array([proj[0, :3], proj[1, :3], proj[3, :3], [0.0, 0.0, 1.0]])
+    shift = np.array([proj[0, 3], proj[1, 3], proj[3, 3], 0.0])
+    base = p @ lin.T + shift
+    pt, pb, pn = t @ lin.T, bt @ lin.T, n @ lin.T
+    z_stored = pos[..., 2].ravel()
+    covered = m.ravel()
     occluded = np.zeros(len(p))
-    stored_z = pos[..., 2]
     for kx, ky, kz in ker:
-        q = p + r * (kx * t + ky * bt + kz * n)
-        clip = q @ proj[:3, :3].T + proj[:3, 3]
-        cw = q @ proj[3, :3] + proj[3, 3]
+        cx, cy, cw, qz = (base + (r * kx) * pt + (r * ky) * pb + (r * kz) * pn).T
         with np.errstate(divide="ignore", invalid="ignore"):
-            col = np.floor((clip[:, 0] / cw + 1) / 2 * w)
-            row = np.floor((clip[:, 1] / cw + 1) / 2 * h)
+            col = np.floor((cx / cw + 1) * (w / 2))
+            row = np.floor((cy / cw + 1) * (h / 2))
         inside = (cw > 0) & (col >= 0) & (col < w) & (row >= 0) & (row < h)
-        ci = np.where(inside, col, 0).astype(np.intp)
-        ri = np.where(inside, row, 0).astype(np.intp)
-        sz = stored_z[ri, ci]
-        hit = inside & m[ri, ci] & (sz > q[:, 2] + b)
+        flat = np.where(inside, row * w + col, 0).astype(np.intp)
+        sz = z_stored[flat]
+        hit = inside & covered[flat] & (sz > qz + b)
         if range_check:
             hit &= np.abs(sz - p[:, 2]) <= r
         occluded += hit
@@ -483,8 +487,9 @@ def ssao_test_scene(aspect=1.0):
     World y is up. The floor is y = 0 (x and z in [-4, 4]), the back wall z = -2 (up to
     y = 3); a box [-2, -0.8] x [0, 1] x [-2, -1] stands in the corner of floor and wall; a
     shelf, the block [0.2, 2.2] x [0.35, 0.95] x [-2, -1.1], sticks out of the wall above the
-    floor (an overhang with open space under it). The camera at (0, 1.4, 3.2) looks at
-    (0, 0.3, -1) with a 50 degree vertical field of view, and sees the floor under the shelf.
+    floor (an overhang with open space under it). The camera at (0.1, 1.6, 2.4) looks at
+    (0.1, 0.45, -1.5) with a 55 degree vertical field of view, and sees the floor under the
+    shelf.
 
     Parameters
     ----------
@@ -511,7 +516,7 @@ def ssao_test_scene(aspect=1.0):
         verts.append(v)
         faces.append(f + base)
         base += len(v)
-    eye = np.array([0.0, 1.4, 3.2])
-    view = viewing.look_at(eye, np.array([0.0, 0.3, -1.0]) - eye, [0, 1, 0])
-    projection = viewing.perspective(np.radians(50), as_positive(aspect, "aspect"), 0.5, 20.0)
+    eye = np.array([0.1, 1.6, 2.4])
+    view = viewing.look_at(eye, np.array([0.1, 0.45, -1.5]) - eye, [0, 1, 0])
+    projection = viewing.perspective(np.radians(55), as_positive(aspect, "aspect"), 0.5, 20.0)
     return SSAOScene(np.concatenate(verts), np.concatenate(faces), view, projection)
