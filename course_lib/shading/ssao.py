@@ -471,7 +471,7 @@ class SSAOScene(NamedTuple):
     projection: np.ndarray
 
 
-def _box(lo, hi):
+def _box_mesh(lo, hi):
     """The 8 corners and 12 triangles of an axis-aligned box."""
     x0, y0, z0 = lo
     x1, y1, z1 = hi
@@ -510,7 +510,8 @@ def ssao_test_scene(aspect=1.0):
              np.array([[0, 2, 1], [0, 3, 2]]))
     wall = (np.array([[-4, 0, -2], [4, 0, -2], [4, 3, -2], [-4, 3, -2]], float),
             np.array([[0, 1, 2], [0, 2, 3]]))
-    parts = [floor, wall, _box((-2, 0, -2), (-0.8, 1, -1)), _box((0.2, 0.35, -2), (2.2, 0.95, -1.1))]
+    parts = [floor, wall, _box_mesh((-2, 0, -2), (-0.8, 1, -1)),
+             _box_mesh((0.2, 0.35, -2), (2.2, 0.95, -1.1))]
     verts, faces, base = [], [], 0
     for v, f in parts:
         verts.append(v)
