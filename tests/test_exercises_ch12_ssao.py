@@ -12,7 +12,7 @@ from types import SimpleNamespace
 import pytest
 
 import exercise_harness as harness
-from exercise_harness import SAME, SEEDS, Either
+from exercise_harness import SAME, SEEDS
 from course_lib.exercises._ch12 import ssao as module
 from course_lib.exercises.core import gap
 

@@ -161,7 +161,7 @@ class SSAOExplorer(Explorer):
         self.state = state or State()
         s = scene(self.state)
         self.fig = draw.figure(figsize=(9.0, 3.3))
-        axes = [self.fig.add_axes((0.02 + 0.31 * i, 0.06, 0.27, 0.8)) for i in range(3)]
+        axes = [self.fig.add_axes((0.02 + 0.3 * i, 0.06, 0.26, 0.8)) for i in range(3)]
         self.images = [
             axes[0].imshow(s["ssao"], origin="lower", cmap="gray", vmin=0, vmax=1,
                            interpolation="nearest"),
@@ -169,7 +169,7 @@ class SSAOExplorer(Explorer):
                            interpolation="nearest"),
             axes[2].imshow(s["difference"], origin="lower", cmap="RdBu", vmin=-0.4, vmax=0.4,
                            interpolation="nearest")]
-        self.fig.colorbar(self.images[2], cax=self.fig.add_axes((0.955, 0.06, 0.012, 0.8)))
+        self.fig.colorbar(self.images[2], cax=self.fig.add_axes((0.895, 0.06, 0.012, 0.8)))
         for ax in axes:
             ax.set_xticks([])
             ax.set_yticks([])
