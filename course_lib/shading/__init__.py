@@ -115,6 +115,8 @@ Files
     meshes.
 ``occlusion.py``
     Chapter 12 (lesson section 5): ambient occlusion, sampled by rays and in closed form.
+``ssao.py``
+    Chapter 12 (lesson section 5.1): ambient occlusion in screen space (SSAO) from a G-buffer.
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
@@ -131,30 +133,41 @@ from .radiometry import (QUANTITIES, PointIrradiance, Quantity, cone_solid_angle
     emitter_intensity, isotropic_intensity, lambertian_exitance, lambertian_radiance,
     patch_solid_angle, point_light_irradiance, polygon_light_irradiance, polygon_solid_angle,
     small_light_irradiance, spherical_region_solid_angle)
+from .ssao import (GBuffer, RayTracedOcclusion, SSAOScene, box_blur, g_buffer,
+    ray_traced_occlusion, ssao, ssao_kernel, ssao_test_scene)
 
 __all__ = [
     "AmbientOcclusion",
     "BarycentricBuffers",
+    "GBuffer",
     "HeightField",
     "Light",
     "Material",
     "PhongTerms",
+    "RayTracedOcclusion",
+    "SSAOScene",
     "ShadedImage",
     "ambient_occlusion",
     "ambient_occlusion_closed_form",
     "attenuation",
     "barycentric_buffers",
     "blinn_phong",
+    "box_blur",
     "colored_material",
     "cosine_sample_hemisphere",
     "directional_light",
     "face_normals",
+    "g_buffer",
     "halfway",
     "material_per_point",
     "phong",
     "point_light",
+    "ray_traced_occlusion",
     "reflect",
     "render_shaded",
+    "ssao",
+    "ssao_kernel",
+    "ssao_test_scene",
     "uv_sphere",
     "vertex_normals",
     "view_directions",
