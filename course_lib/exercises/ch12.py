@@ -33,12 +33,14 @@ the seeds: a case to know, not the usual answer. Every exercise gives step-by-st
 The exercises live in :mod:`course_lib.exercises._ch12`, one module per topic (what
 the topics share is in its ``__init__``); import them from here.
 """
+from ._ch12.radiometry import PointLightIrradiance, RadianceIntensity, SolidAngle
 from ._ch12.vectors import ReflectionVector
 from ._ch12.phong import (BlinnPhongHighlight, DiffuseTerm, DistanceAttenuation, PhongTotal,
                           SeveralLights, SpecularTerm)
 from ._ch12.interpolation import SHADING_METHODS, GouraudVersusPhong, ShadingMethodChoice
 from ._ch12.ambient_occlusion import AmbientOcclusionSamples, AmbientOcclusionWall
 from ._ch12.light_colours import PhongLightColours
+from ._ch12.ssao import SSAOPixel, SSAOSampleCount
 
 __all__ = [
     "EXERCISES",
@@ -51,14 +53,22 @@ __all__ = [
     "GouraudVersusPhong",
     "PhongLightColours",
     "PhongTotal",
+    "PointLightIrradiance",
+    "RadianceIntensity",
     "ReflectionVector",
+    "SSAOPixel",
+    "SSAOSampleCount",
     "SeveralLights",
     "ShadingMethodChoice",
+    "SolidAngle",
     "SpecularTerm",
 ]
 
 #: The exercises of chapter 12, in the order of the solutions notebook.
 EXERCISES = (
+    SolidAngle,
+    PointLightIrradiance,
+    RadianceIntensity,
     ReflectionVector,
     DiffuseTerm,
     SpecularTerm,
@@ -71,4 +81,6 @@ EXERCISES = (
     GouraudVersusPhong,
     AmbientOcclusionSamples,
     AmbientOcclusionWall,
+    SSAOPixel,
+    SSAOSampleCount,
 )
