@@ -112,6 +112,9 @@ Files
     meshes.
 ``occlusion.py``
     Chapter 12 (lesson section 5): ambient occlusion, sampled by rays and in closed form.
+``brdf.py``
+    Chapter 12 (lesson section 6): BRDFs (Lambert, Phong, Blinn-Phong, mirror), Fresnel and
+    Schlick, the reflectance equation, reflectance and the energy/reciprocity checks.
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
@@ -124,8 +127,25 @@ from .interpolated import (BarycentricBuffers, ShadedImage, barycentric_buffers,
     render_shaded, uv_sphere, vertex_normals)
 from .occlusion import (AmbientOcclusion, HeightField, ambient_occlusion,
     ambient_occlusion_closed_form, cosine_sample_hemisphere)
+from .brdf import (BRDFCheck, blinn_phong_brdf, blinn_phong_normalization, check_brdf,
+    combined_brdf, fresnel_dielectric, fresnel_schlick, hemispherical_reflectance, lambert_brdf,
+    mirror_radiance, phong_brdf, phong_normalization, reflected_radiance, schlick_f0)
 
 __all__ = [
+    "BRDFCheck",  # brdf
+    "blinn_phong_brdf",  # brdf
+    "blinn_phong_normalization",  # brdf
+    "check_brdf",  # brdf
+    "combined_brdf",  # brdf
+    "fresnel_dielectric",  # brdf
+    "fresnel_schlick",  # brdf
+    "hemispherical_reflectance",  # brdf
+    "lambert_brdf",  # brdf
+    "mirror_radiance",  # brdf
+    "phong_brdf",  # brdf
+    "phong_normalization",  # brdf
+    "reflected_radiance",  # brdf
+    "schlick_f0",  # brdf
     "AmbientOcclusion",
     "BarycentricBuffers",
     "HeightField",
