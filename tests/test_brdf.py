@@ -289,3 +289,14 @@ def test_vectorized_shapes():
     for i in range(7):
         assert f[i] == pytest.approx(float(B.phong_brdf(l[i], Z, Z, 0.5, 10)))
     assert B.lambert_brdf(l, Z, Z, 0.5).shape == (7,)
+
+
+def test_fresnel_agrees_with_the_ray_tracer_s_own():
+    """The ray tracer (chapter 15) has its own Fresnel and Schlick: both sides agree."""
+    from course_lib.raytracing import optics
+    c = np.linspace(0, 1, 37)
+    for n1, n2 in ((1.0, 1.5), (1.5, 1.0), (1.0, 2.4)):
+        assert np.allclose(B.fresnel_dielectric(c, n1, n2), optics.fresnel(c, n1, n2),
+                           atol=1e-12)
+    assert np.allclose(B.fresnel_schlick(c, B.schlick_f0(1.0, 1.5)), optics.schlick(c, 1.0, 1.5),
+                       atol=1e-12)

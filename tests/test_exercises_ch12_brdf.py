@@ -8,7 +8,6 @@ and Schlick's formula with F0 = ((1 - n) / (1 + n))^2. Every named mistake is re
 import math
 import types
 
-import numpy as np
 import pytest
 from scipy.integrate import quad
 

@@ -54,6 +54,7 @@ import numpy as np
 
 from .._validate import as_array, as_choice, as_points, as_rng, as_scalar, as_whole
 from ._common import _dot, _unit
+from .occlusion import _tangent_frame
 
 __all__ = ["BRDFCheck", "blinn_phong_brdf", "blinn_phong_normalization", "check_brdf",
     "combined_brdf", "fresnel_dielectric", "fresnel_schlick", "hemispherical_reflectance",
@@ -312,7 +313,7 @@ def combined_brdf(l, v, n, kd=0.5, ks=0.5, shininess=10.0, model="phong", normal
 # Fresnel and the ideal mirror
 # ---------------------------------------------------------------------------------------------
 
-def _cosines(cos_theta):
+def _incidence_cosines(cos_theta):
     c = as_array(cos_theta, "cos_theta")
     if np.any((c < 0) | (c > 1)):
         raise ValueError("cos_theta must be in [0, 1] (the cosine of an angle of incidence "
@@ -320,7 +321,7 @@ def _cosines(cos_theta):
     return c
 
 
-def _index(value, name):
+def _refractive_index(value, name):
     x = as_array(value, name)
     if np.any(x <= 0):
         raise ValueError(f"{name} must be a positive refractive index (1 for air, 1.5 for "
@@ -339,7 +340,9 @@ def fresnel_dielectric(cos_theta, n1=1.0, n2=1.5, polarization="unpolarized"):
               n_1\cos\theta_t}, \quad F = \tfrac12 (r_s^2 + r_p^2);
 
     :math:`F = 1` under total internal reflection (:math:`\sin\theta_t > 1`, only when
-    :math:`n_1 > n_2`). ``polarization='s'`` or ``'p'`` returns :math:`r_s^2` or
+    :math:`n_1 > n_2`). The ray tracer's :func:`course_lib.raytracing.fresnel` computes the
+    same unpolarised value (a test checks that they agree); this one also gives each
+    polarisation: ``polarization='s'`` or ``'p'`` returns :math:`r_s^2` or
     :math:`r_p^2` (:math:`r_p = 0` at Brewster's angle :math:`\tan\theta_B = n_2/n_1`).
 
     Examples
@@ -349,14 +352,15 @@ def fresnel_dielectric(cos_theta, n1=1.0, n2=1.5, polarization="unpolarized"):
     >>> float(fresnel_dielectric(0.5, 1.5, 1.0))                # 60 deg inside glass: TIR
     1.0
     """
-    c = _cosines(cos_theta)
-    n1, n2 = _index(n1, "n1"), _index(n2, "n2")
+    c = _incidence_cosines(cos_theta)
+    n1, n2 = _refractive_index(n1, "n1"), _refractive_index(n2, "n2")
     polarization = as_choice(polarization, "polarization", ("unpolarized", "s", "p"))
     sin_t2 = (n1 / n2) ** 2 * (1 - c * c)
     tir = sin_t2 >= 1
     ct = np.sqrt(np.clip(1 - sin_t2, 0, 1))
-    rs = (n1 * c - n2 * ct) / (n1 * c + n2 * ct)
-    rp = (n2 * c - n1 * ct) / (n2 * c + n1 * ct)
+    with np.errstate(invalid="ignore", divide="ignore"):    # 0/0 only at grazing TIR
+        rs = (n1 * c - n2 * ct) / (n1 * c + n2 * ct)
+        rp = (n2 * c - n1 * ct) / (n2 * c + n1 * ct)
     value = {"s": rs ** 2, "p": rp ** 2, "unpolarized": 0.5 * (rs ** 2 + rp ** 2)}[polarization]
     return np.where(tir, 1.0, value)
 
@@ -369,7 +373,7 @@ def schlick_f0(n1=1.0, n2=1.5):
     >>> round(float(schlick_f0(1.0, 1.5)), 12)
     0.04
     """
-    n1, n2 = _index(n1, "n1"), _index(n2, "n2")
+    n1, n2 = _refractive_index(n1, "n1"), _refractive_index(n2, "n2")
     return ((n1 - n2) / (n1 + n2)) ** 2
 
 
@@ -384,7 +388,7 @@ def fresnel_schlick(cos_theta, f0=0.04):
     >>> float(fresnel_schlick(0.5, 0.04))                 # 0.04 + 0.96 / 32
     0.07
     """
-    c = _cosines(cos_theta)
+    c = _incidence_cosines(cos_theta)
     f0 = _fraction(f0, "f0", "the reflectance at normal incidence")
     return f0 + (1 - f0) * (1 - c) ** 5
 
@@ -502,14 +506,6 @@ def _gauss_pieces(breaks, order):
     return np.concatenate(nodes), np.concatenate(weights)
 
 
-def _frame(n):
-    """Unit tangents t1, t2 with (t1, t2, n) orthonormal, for one unit n."""
-    helper = np.array([1.0, 0, 0]) if abs(n[0]) < 0.9 else np.array([0, 1.0, 0])
-    t1 = np.cross(helper, n)
-    t1 /= np.linalg.norm(t1)
-    return t1, np.cross(n, t1)
-
-
 def hemispherical_reflectance(brdf, l, n=(0.0, 0.0, 1.0), shininess=None, order=48):
     r"""Directional-hemispherical reflectance :math:`\rho(l) = \int_\Omega f_r(l, v)
     \cos\theta_v\, d\omega_v` by deterministic quadrature.
@@ -561,7 +557,7 @@ def hemispherical_reflectance(brdf, l, n=(0.0, 0.0, 1.0), shininess=None, order=
         if s < 0:
             raise ValueError(f"shininess must be >= 0, got {s:g}")
         width = min(np.pi, 12.0 / np.sqrt(s)) if s > 0 else None
-    t1, t2 = _frame(n)
+    t1, t2 = _tangent_frame(n)
     out = np.empty(len(ls))
     for k, lk in enumerate(ls):
         ct = np.clip(lk @ n, -1, 1)
@@ -586,7 +582,14 @@ def hemispherical_reflectance(brdf, l, n=(0.0, 0.0, 1.0), shininess=None, order=
 
 
 class BRDFCheck(NamedTuple):
-    """What :func:`check_brdf` found."""
+    """What :func:`check_brdf` found: the reflectances and the three verdicts with their errors.
+
+    Examples
+    --------
+    >>> c = check_brdf(lambda l, v, n: lambert_brdf(l, v, n, 0.5), incidence_deg=[0, 45])
+    >>> c.reflectance.round(12).tolist(), c.energy_conserving, c.reciprocal, c.isotropic
+    ([0.5, 0.5], True, True, True)
+    """
     incidence_deg: np.ndarray          # the incidence angles tried
     reflectance: np.ndarray            # rho(l) at each of them
     max_reflectance: float
