@@ -100,8 +100,7 @@ def test_original_phong_reflectance_grows_towards_grazing():
            for t in (0, 60, 80, 89)]
     assert rho[0] == pytest.approx(2 * math.pi / 52, rel=1e-7)
     assert np.all(np.diff(rho) > 0)
-    check = B.check_brdf(f, 50)
-    assert not check.energy_conserving or check.max_reflectance <= 1
+    assert rho[-1] > 3 * rho[0]                 # the 1 / cos(theta_i) blows up near grazing
     big = B.check_brdf(phong_f(1.0, 2, "original"), 2)
     assert not big.energy_conserving and big.max_reflectance > 1
 
