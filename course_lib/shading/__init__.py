@@ -102,21 +102,24 @@ Files
 ``radiometry.py``
     Chapter 12 (lesson section 1): radiometric quantities, solid angles, irradiance from point
     and area lights.
-``materials.py``
-    Chapter 12 (lesson section 2.1): materials and light sources of the local illumination
-    model.
 ``vectors.py``
-    Chapter 12 (lesson section 1): the vectors of the model: normal, light, view, reflection,
+    Chapter 12 (lesson section 2): the vectors of the model: normal, light, view, reflection,
     halfway.
+``materials.py``
+    Chapter 12 (lesson sections 3.1, 3.2): materials, and light sources of one intensity or of
+    separate ambient, diffuse and specular colours.
 ``illumination.py``
-    Chapter 12 (lesson sections 2, 3): the Lambert, Phong and Blinn-Phong models.
+    Chapter 12 (lesson sections 3, 4): the Lambert, Phong and Blinn-Phong models.
 ``interpolated.py``
-    Chapter 12 (lesson section 4): vertex normals and flat, Gouraud and Phong shading of
+    Chapter 12 (lesson section 5): vertex normals and flat, Gouraud and Phong shading of
     meshes.
+``brdf.py``
+    Chapter 12 (lesson section 6): BRDFs (Lambert, Phong, Blinn-Phong, mirror), Fresnel and
+    Schlick, the reflectance equation, reflectance and the energy/reciprocity checks.
 ``occlusion.py``
-    Chapter 12 (lesson section 5): ambient occlusion, sampled by rays and in closed form.
+    Chapter 12 (lesson section 7): ambient occlusion, sampled by rays and in closed form.
 ``ssao.py``
-    Chapter 12 (lesson section 5.1): ambient occlusion in screen space (SSAO) from a G-buffer.
+    Chapter 12 (lesson section 7.1): ambient occlusion in screen space (SSAO) from a G-buffer.
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
@@ -135,54 +138,71 @@ from .radiometry import (QUANTITIES, PointIrradiance, Quantity, cone_solid_angle
     small_light_irradiance, spherical_region_solid_angle)
 from .ssao import (GBuffer, RayTracedOcclusion, SSAOScene, box_blur, g_buffer,
     ray_traced_occlusion, ssao, ssao_kernel, ssao_test_scene)
+from .brdf import (BRDFCheck, blinn_phong_brdf, blinn_phong_normalization, check_brdf,
+    combined_brdf, fresnel_dielectric, fresnel_schlick, hemispherical_reflectance, lambert_brdf,
+    mirror_radiance, phong_brdf, phong_normalization, reflected_radiance, schlick_f0)
 
 __all__ = [
-    "AmbientOcclusion",
-    "BarycentricBuffers",
-    "GBuffer",
-    "HeightField",
-    "Light",
-    "Material",
-    "PhongTerms",
-    "RayTracedOcclusion",
-    "SSAOScene",
-    "ShadedImage",
     "ambient_occlusion",
     "ambient_occlusion_closed_form",
+    "AmbientOcclusion",
     "attenuation",
     "barycentric_buffers",
+    "BarycentricBuffers",
     "blinn_phong",
+    "blinn_phong_brdf",
+    "blinn_phong_normalization",
     "box_blur",
+    "BRDFCheck",
+    "check_brdf",
     "colored_material",
+    "combined_brdf",
+    "cone_solid_angle",
     "cosine_sample_hemisphere",
     "directional_light",
+    "emitter_intensity",
     "face_normals",
+    "fresnel_dielectric",
+    "fresnel_schlick",
     "g_buffer",
+    "GBuffer",
     "halfway",
+    "HeightField",
+    "hemispherical_reflectance",
+    "isotropic_intensity",
+    "lambert_brdf",
+    "lambertian_exitance",
+    "lambertian_radiance",
+    "Light",
+    "Material",
     "material_per_point",
+    "mirror_radiance",
+    "patch_solid_angle",
     "phong",
+    "phong_brdf",
+    "phong_normalization",
+    "PhongTerms",
     "point_light",
+    "point_light_irradiance",
+    "PointIrradiance",
+    "polygon_light_irradiance",
+    "polygon_solid_angle",
+    "QUANTITIES",
+    "Quantity",
     "ray_traced_occlusion",
+    "RayTracedOcclusion",
     "reflect",
+    "reflected_radiance",
     "render_shaded",
+    "schlick_f0",
+    "ShadedImage",
+    "small_light_irradiance",
+    "spherical_region_solid_angle",
     "ssao",
     "ssao_kernel",
     "ssao_test_scene",
+    "SSAOScene",
     "uv_sphere",
     "vertex_normals",
     "view_directions",
-    "QUANTITIES",  # radiometry
-    "PointIrradiance",  # radiometry
-    "Quantity",  # radiometry
-    "cone_solid_angle",  # radiometry
-    "emitter_intensity",  # radiometry
-    "isotropic_intensity",  # radiometry
-    "lambertian_exitance",  # radiometry
-    "lambertian_radiance",  # radiometry
-    "patch_solid_angle",  # radiometry
-    "point_light_irradiance",  # radiometry
-    "polygon_light_irradiance",  # radiometry
-    "polygon_solid_angle",  # radiometry
-    "small_light_irradiance",  # radiometry
-    "spherical_region_solid_angle",  # radiometry
 ]

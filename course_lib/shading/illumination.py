@@ -1,4 +1,4 @@
-"""Chapter 12 (lesson sections 2, 3): the Lambert, Phong and Blinn-Phong models."""
+"""Chapter 12 (lesson sections 3, 4): the Lambert, Phong and Blinn-Phong models."""
 
 from typing import NamedTuple
 

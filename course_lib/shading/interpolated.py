@@ -1,4 +1,4 @@
-"""Chapter 12 (lesson section 4): vertex normals and flat, Gouraud and Phong shading of meshes."""
+"""Chapter 12 (lesson section 5): vertex normals and flat, Gouraud and Phong shading of meshes."""
 
 from typing import NamedTuple
 

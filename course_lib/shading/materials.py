@@ -1,4 +1,5 @@
-"""Chapter 12 (lesson section 2.1): materials and light sources of the local illumination model."""
+"""Chapter 12 (lesson sections 3.1, 3.2): materials and light sources of the local illumination
+model."""
 
 from typing import NamedTuple
 

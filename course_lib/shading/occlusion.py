@@ -1,4 +1,4 @@
-"""Chapter 12 (lesson section 5): ambient occlusion, sampled by rays and in closed form."""
+"""Chapter 12 (lesson section 7): ambient occlusion, sampled by rays and in closed form."""
 
 from typing import NamedTuple
 

@@ -1,4 +1,4 @@
-r"""Chapter 12 (lesson section 5.1): ambient occlusion in screen space (SSAO).
+r"""Chapter 12 (lesson section 7.1): ambient occlusion in screen space (SSAO).
 
 Ray-traced ambient occlusion (:func:`course_lib.shading.ambient_occlusion`) casts rays into the
 scene. Screen-space ambient occlusion replaces the scene by what the z-buffer already holds

@@ -1,4 +1,4 @@
-"""Chapter 12 (lesson section 1): the vectors of the model: normal, light, view, reflection,
+"""Chapter 12 (lesson section 2): the vectors of the model: normal, light, view, reflection,
 halfway.
 """
 

@@ -23,7 +23,7 @@ _SPECULAR_LIGHTS = ((1.0, 1.0, 1.0), (0.5, 0.5, 1.0), (1.0, 1.0, 0.5), (0.5, 1.0
 _AMBIENT_LIGHTS = ((0.1, 0.1, 0.1), (0.2, 0.2, 0.2), (0.1, 0.1, 0.2), (0.2, 0.1, 0.1))
 
 
-def _rgb(c):
+def _colour_text(c):
     return "(" + ", ".join(_num(x) for x in np.ravel(c)) + ")"
 
 
@@ -147,12 +147,12 @@ class PhongLightColours(_Boundary, DrawnExercise):
 
     def statement(self):
         return (
-            rf"A point of a plastic surface of colour $C = {_rgb(self.C)}$ (its ambient and "
+            rf"A point of a plastic surface of colour $C = {_colour_text(self.C)}$ (its ambient and "
             r"diffuse coefficients, $k_a = k_d = C$) with the grey specular coefficient "
             rf"$k_s = {_num(self.ks)}$ and shininess $n = {self.n}$ is lit by one distant light "
             r"that has separate colours for the three terms: ambient "
-            rf"$I_a = {_rgb(self.Ia)}$, diffuse $I_d = {_rgb(self.Id)}$ and specular "
-            rf"$I_s = {_rgb(self.Is)}$. At the point, $N \cdot L = {_num(self.NL)}$ and "
+            rf"$I_a = {_colour_text(self.Ia)}$, diffuse $I_d = {_colour_text(self.Id)}$ and specular "
+            rf"$I_s = {_colour_text(self.Is)}$. At the point, $N \cdot L = {_num(self.NL)}$ and "
             rf"$R \cdot V = {_num(self.RV)}$. There is no other light and no emission." "\n\n"
             r"Compute the colour $(I_R, I_G, I_B)$ that the Phong model gives at this point."
             "\n\n**Answer:** three numbers (R, G, B), unclamped; 3 significant digits are "
@@ -163,7 +163,7 @@ class PhongLightColours(_Boundary, DrawnExercise):
             r"Each colour of the light feeds one term: $I = k_a \odot I_a + k_d \odot I_d\, "
             r"\max(N \cdot L, 0) + k_s I_s \max(R \cdot V, 0)^n$, channel by channel "
             r"($\odot$: multiply R with R, G with G, B with B).",
-            rf"The ambient term is $C \odot I_a = {_rgb(self.C)} \odot {_rgb(self.Ia)} = "
+            rf"The ambient term is $C \odot I_a = {_colour_text(self.C)} \odot {_colour_text(self.Ia)} = "
             rf"{_vec(self.C * self.Ia)}$; it does not depend on the angles.",
             (r"$N \cdot L < 0$: the light is behind the surface. Which terms are left?"
              if self.NL <= 0 else
@@ -173,7 +173,7 @@ class PhongLightColours(_Boundary, DrawnExercise):
 
     def worked(self):
         amb = self.C * self.Ia
-        steps = [rf"Ambient: $C \odot I_a = {_rgb(self.C)} \odot {_rgb(self.Ia)} = "
+        steps = [rf"Ambient: $C \odot I_a = {_colour_text(self.C)} \odot {_colour_text(self.Ia)} = "
                  rf"{_vec(amb)}$ (the light's ambient part: no angle involved)."]
         if self.NL <= 0:
             steps.append(rf"**The boundary case:** $N \cdot L = {_num(self.NL)} < 0$, the "
@@ -184,10 +184,10 @@ class PhongLightColours(_Boundary, DrawnExercise):
         else:
             dif = self.C * self.Id * self.NL
             spec = self.ks * self.Is * self.RV ** self.n
-            steps += [rf"Diffuse: $C \odot I_d\,(N \cdot L) = {_rgb(self.C)} \odot "
-                      rf"{_rgb(self.Id)} \cdot {_num(self.NL)} = {_vec(dif)}$.",
+            steps += [rf"Diffuse: $C \odot I_d\,(N \cdot L) = {_colour_text(self.C)} \odot "
+                      rf"{_colour_text(self.Id)} \cdot {_num(self.NL)} = {_vec(dif)}$.",
                       rf"Specular: $k_s I_s (R \cdot V)^n = {_num(self.ks)} \cdot "
-                      rf"{_rgb(self.Is)} \cdot {_num(self.RV)}^{self.n} = {_vec(spec)}$ "
+                      rf"{_colour_text(self.Is)} \cdot {_num(self.RV)}^{self.n} = {_vec(spec)}$ "
                       r"(the light's specular colour, untouched by the surface colour).",
                       rf"Sum: $I = {_vec(amb + dif + spec)}$."]
             total = amb + dif + spec
