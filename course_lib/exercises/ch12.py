@@ -1,11 +1,18 @@
-r"""Chapter 12 exercises: local illumination, interpolated shading, ambient occlusion, exam style.
+r"""Chapter 12 exercises: light and radiometry, local illumination, BRDFs, interpolated shading,
+ambient occlusion, exam style.
 
-Each class is one kind of exam question: the mirror direction :math:`R`; the diffuse, the
-specular and the whole Phong intensity of a point under a grey light; Blinn-Phong's halfway
-vector and highlight; the attenuation of a point light with distance; a matte surface under
-several lights; which interpolated shading method (flat, Gouraud, Phong) suits a situation, and
-Gouraud against Phong shading at the midpoint of an edge; ambient occlusion from a list of
-sample rays, and its closed form next to a wall or in a trench. The ``seed`` draws numbers that
+Each class is one kind of exam question: a solid angle (of a cone, a small patch, a region of the
+sphere), the irradiance a point light gives at a distance and an angle, radiance against
+intensity; the mirror direction :math:`R`; the diffuse, the specular and the whole Phong
+intensity of a point under a grey light; Blinn-Phong's halfway vector and highlight; the
+attenuation of a point light with distance; a matte surface under several lights; the Phong
+colour under a light of separate ambient, diffuse and specular colours; which interpolated
+shading method (flat, Gouraud, Phong) suits a situation, and Gouraud against Phong shading at the
+midpoint of an edge; the radiance a Lambertian surface reflects, the normalisation of a Phong
+lobe, the reflectance of a lobe (energy conservation), Schlick's Fresnel factor; ambient
+occlusion from a list of sample rays, and its closed form next to a wall or in a trench; the
+screen-space AO of a pixel from its kernel samples, and the samples SSAO needs for a noise
+level. The ``seed`` draws numbers that
 work out by hand: unit vectors with rational components such as :math:`(\tfrac23, \tfrac13,
 \tfrac23)` or :math:`(0.6, 0, 0.8)`, distances that are whole numbers, small exponents, angles
 that are multiples of 15 degrees.
@@ -22,7 +29,8 @@ vectors that start at the surface point and point *away* from it (:math:`L` towa
 :math:`V` towards the viewer), :math:`R = 2 (N \cdot L) N - L`; a light with
 :math:`N \cdot L \le 0` adds neither diffuse nor specular light; a point light at distance
 :math:`d` is weakened by :math:`f_{att}(d) = 1 / (a + b d + c d^2)`; all lights here are grey
-(one intensity for all three channels), so every intensity is one number.
+(one intensity for all three channels), so every intensity is one number, except in
+:class:`PhongLightColours`, whose light has three RGB colours.
 
 The boundary cases of the clamps :math:`\max(\cdot, 0)` (a light behind the surface, a viewer
 away from the mirror direction, a halfway vector below the surface) are variants of their own,
@@ -38,6 +46,7 @@ from ._ch12.vectors import ReflectionVector
 from ._ch12.phong import (BlinnPhongHighlight, DiffuseTerm, DistanceAttenuation, PhongTotal,
                           SeveralLights, SpecularTerm)
 from ._ch12.interpolation import SHADING_METHODS, GouraudVersusPhong, ShadingMethodChoice
+from ._ch12.brdf import LambertRadiance, LobeReflectance, PhongNormalization, SchlickFresnel
 from ._ch12.ambient_occlusion import AmbientOcclusionSamples, AmbientOcclusionWall
 from ._ch12.light_colours import PhongLightColours
 from ._ch12.ssao import SSAOPixel, SSAOSampleCount
@@ -51,13 +60,17 @@ __all__ = [
     "DiffuseTerm",
     "DistanceAttenuation",
     "GouraudVersusPhong",
+    "LambertRadiance",
+    "LobeReflectance",
     "PhongLightColours",
+    "PhongNormalization",
     "PhongTotal",
     "PointLightIrradiance",
     "RadianceIntensity",
     "ReflectionVector",
     "SSAOPixel",
     "SSAOSampleCount",
+    "SchlickFresnel",
     "SeveralLights",
     "ShadingMethodChoice",
     "SolidAngle",
@@ -79,6 +92,10 @@ EXERCISES = (
     PhongLightColours,
     ShadingMethodChoice,
     GouraudVersusPhong,
+    LambertRadiance,
+    PhongNormalization,
+    LobeReflectance,
+    SchlickFresnel,
     AmbientOcclusionSamples,
     AmbientOcclusionWall,
     SSAOPixel,
