@@ -1,4 +1,6 @@
-"""Chapter 12: Phong shading against VTK's renderer, and ambient occlusion's cost per ray."""
+"""Chapter 12: Phong shading against VTK's renderer, ambient occlusion's cost per ray, and the
+topic files of the chapter: radiometry (ch12_radiometry), BRDFs (ch12_brdf) and screen-space
+ambient occlusion against the ray-traced AO of the same view (ch12_ssao)."""
 import numpy as np
 
 from benchmarks import operation_row
@@ -96,7 +98,15 @@ def operations(quick=False):
     row["ours_ms"] *= scale
     row["reference_ms"] *= scale
     rows.append(row)
+    for topic in _topics():
+        rows += topic.operations(quick)
     return rows
+
+
+def _topics():
+    from benchmarks import ch12_brdf, ch12_radiometry, ch12_ssao
+
+    return (ch12_radiometry, ch12_brdf, ch12_ssao)
 
 
 def widgets(quick=False):
@@ -128,4 +138,6 @@ def widgets(quick=False):
                            lambda i: setattr(explorer.samples, "value", 2 + 7 * (i % 36)),
                            explorer.fig.canvas.draw, repeat))
     plt.close(explorer.fig)
+    for topic in _topics():
+        rows += topic.widgets(quick)
     return rows
