@@ -23,6 +23,7 @@ Command line::
 import argparse
 import ast
 import copy
+import os
 import re
 import sys
 from pathlib import Path
@@ -275,13 +276,30 @@ def execute(nb, cwd, timeout=600):
     """Execute `nb` in a fresh kernel in directory `cwd` and return it with its outputs.
 
     No timing metadata and no widget state are stored, so that re-running gives the same file.
+    The kernel records no exercise check and reads an empty progress file of its own: the
+    stored outputs (the start page's progress table, the adaptive mock exam) must not depend on
+    the progress of whoever rebuilds the notebooks, nor add to it.
     """
+    import tempfile
+
     from nbclient import NotebookClient
 
     client = NotebookClient(nb, timeout=timeout, kernel_name="python3",
                             resources={"metadata": {"path": str(cwd)}},
                             record_timing=False, store_widget_state=False)
-    client.execute()
+    keys = ("COURSE_RECORD_ATTEMPTS", "COURSE_PROGRESS_FILE")
+    saved = {key: os.environ.get(key) for key in keys}
+    with tempfile.TemporaryDirectory(prefix="course-build-") as folder:
+        os.environ["COURSE_RECORD_ATTEMPTS"] = "0"
+        os.environ["COURSE_PROGRESS_FILE"] = os.path.join(folder, "progress.json")
+        try:
+            client.execute()            # the kernel inherits the environment when it starts
+        finally:
+            for key, value in saved.items():
+                if value is None:
+                    os.environ.pop(key, None)
+                else:
+                    os.environ[key] = value
     nb.metadata.pop("widgets", None)
     return with_slides(nb)
 

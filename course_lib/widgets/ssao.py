@@ -21,7 +21,7 @@ from ._base import Explorer, bind, panel, slider
 __all__ = ["MAX_SAMPLES", "SIZE", "SSAOExplorer", "State", "buffers", "ray_distances",
            "scene"]
 
-SIZE = 128
+SIZE = 96
 MAX_SAMPLES = 32
 
 
@@ -51,7 +51,7 @@ def buffers():
     --------
     >>> scene_, gb = buffers()
     >>> gb.positions.shape
-    (128, 128, 3)
+    (96, 96, 3)
     """
     sc = shading.ssao_test_scene()
     return sc, shading.g_buffer(sc.vertices, sc.faces, sc.view, sc.projection, SIZE, SIZE)
@@ -64,7 +64,7 @@ def ray_distances():
     Examples
     --------
     >>> ray_distances().distances.shape
-    (128, 128, 32)
+    (96, 96, 32)
     """
     sc, gb = buffers()
     return shading.ray_traced_occlusion(gb, sc.vertices[sc.faces], samples=MAX_SAMPLES, seed=7)
@@ -93,7 +93,7 @@ def scene(state):
     --------
     >>> s = scene(State())
     >>> s["ssao"].shape, bool(s["mean_abs_difference"] < 0.1)
-    ((128, 128), True)
+    ((96, 96), True)
     """
     sc, gb = buffers()
     k = int(state.samples)
