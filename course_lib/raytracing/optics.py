@@ -240,11 +240,18 @@ def fresnel(cos_theta, eta1, eta2):
     array([0.04  , 0.0892])
     """
     c1, e1, e2 = _cosines(cos_theta, eta1, eta2)
+    rs2, rp2 = _fresnel_components(c1, e1, e2)
+    return 0.5 * (rs2 + rp2)
+
+
+def _fresnel_components(c1, e1, e2):
+    """The reflectances r_s^2 and r_p^2 of the two polarisations (unvalidated), 1 under total
+    internal reflection; :func:`fresnel` and :func:`course_lib.shading.fresnel_dielectric`."""
     c2, tir = _transmitted_cosine(c1, e1, e2)
     with np.errstate(invalid="ignore", divide="ignore"):
         rs = (e1 * c1 - e2 * c2) / (e1 * c1 + e2 * c2)
         rp = (e2 * c1 - e1 * c2) / (e2 * c1 + e1 * c2)
-        f = 0.5 * (rs * rs + rp * rp)
     # 0/0 only at grazing incidence with eta1 = eta2: no interface, nothing reflected
-    f = np.where(np.isfinite(f), f, 0.0)
-    return np.where(tir, 1.0, f)
+    rs2 = np.where(np.isfinite(rs), rs * rs, 0.0)
+    rp2 = np.where(np.isfinite(rp), rp * rp, 0.0)
+    return np.where(tir, 1.0, rs2), np.where(tir, 1.0, rp2)

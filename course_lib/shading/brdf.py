@@ -341,8 +341,8 @@ def fresnel_dielectric(cos_theta, n1=1.0, n2=1.5, polarization="unpolarized"):
 
     :math:`F = 1` under total internal reflection (:math:`\sin\theta_t > 1`, only when
     :math:`n_1 > n_2`). The ray tracer's :func:`course_lib.raytracing.fresnel` computes the
-    same unpolarised value (a test checks that they agree); this one also gives each
-    polarisation: ``polarization='s'`` or ``'p'`` returns :math:`r_s^2` or
+    same unpolarised value with the same code (one implementation of Fresnel's equations);
+    this one also gives each polarisation: ``polarization='s'`` or ``'p'`` returns :math:`r_s^2` or
     :math:`r_p^2` (:math:`r_p = 0` at Brewster's angle :math:`\tan\theta_B = n_2/n_1`).
 
     Examples
@@ -352,17 +352,14 @@ def fresnel_dielectric(cos_theta, n1=1.0, n2=1.5, polarization="unpolarized"):
     >>> float(fresnel_dielectric(0.5, 1.5, 1.0))                # 60 deg inside glass: TIR
     1.0
     """
+    from ..raytracing.optics import _fresnel_components    # here: raytracing imports shading
+
     c = _incidence_cosines(cos_theta)
     n1, n2 = _refractive_index(n1, "n1"), _refractive_index(n2, "n2")
     polarization = as_choice(polarization, "polarization", ("unpolarized", "s", "p"))
-    sin_t2 = (n1 / n2) ** 2 * (1 - c * c)
-    tir = sin_t2 >= 1
-    ct = np.sqrt(np.clip(1 - sin_t2, 0, 1))
-    with np.errstate(invalid="ignore", divide="ignore"):    # 0/0 only at grazing TIR
-        rs = (n1 * c - n2 * ct) / (n1 * c + n2 * ct)
-        rp = (n2 * c - n1 * ct) / (n2 * c + n1 * ct)
-    value = {"s": rs ** 2, "p": rp ** 2, "unpolarized": 0.5 * (rs ** 2 + rp ** 2)}[polarization]
-    return np.where(tir, 1.0, value)
+    c, n1, n2 = np.broadcast_arrays(c, n1, n2)
+    rs2, rp2 = _fresnel_components(c, n1, n2)
+    return {"s": rs2, "p": rp2, "unpolarized": 0.5 * (rs2 + rp2)}[polarization]
 
 
 def schlick_f0(n1=1.0, n2=1.5):
