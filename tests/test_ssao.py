@@ -326,3 +326,42 @@ def test_errors(small):
     rt = shading.ray_traced_occlusion(gb, np.zeros((1, 3, 3)) + np.eye(3), samples=2, seed=0)
     with pytest.raises(ValueError, match="radius"):
         rt.visibility(-1)
+
+
+def test_positions_from_the_depth_buffer_alone_are_the_g_buffers_points():
+    """What a GPU keeps is the z-buffer's depth: unprojecting it gives back the points that
+    the G-buffer interpolated from the triangles' corners (two independent routes), and SSAO
+    from those points is SSAO from the G-buffer."""
+    scene = shading.ssao_test_scene()
+    gb = shading.g_buffer(scene.vertices, scene.faces, scene.view, scene.projection, 48, 48)
+    pos, mask = shading.positions_from_depth(gb.depth, scene.projection)
+    assert np.array_equal(mask, gb.mask) and mask.any()
+    # and where nothing is drawn (inf in the z-buffer) nothing comes back
+    P = viewing.perspective(np.radians(60), 1.0, 1.0, 10.0)
+    square = [[-1, -1, -3], [1, -1, -3], [1, 1, -3], [-1, 1, -3]]
+    small = shading.g_buffer(square, [[0, 1, 2], [0, 2, 3]], np.eye(4), P, 12, 12)
+    small_pos, small_mask = shading.positions_from_depth(small.depth, P)
+    assert np.array_equal(small_mask, small.mask) and not small_mask.all()
+    assert np.all(small_pos[~small_mask] == 0) and np.allclose(small_pos[small_mask, 2], -3)
+    assert np.allclose(pos[mask], gb.positions[mask], atol=1e-9)
+    # the unprojection typed out for one pixel: NDC from the pixel centre and the depth
+    i, j = np.argwhere(mask)[len(np.argwhere(mask)) // 2]
+    ndc = np.array([2 * (j + 0.5) / 48 - 1, 2 * (i + 0.5) / 48 - 1, 2 * gb.depth[i, j] - 1, 1])
+    eye = np.linalg.solve(np.asarray(scene.projection, float), ndc)
+    assert np.allclose(eye[:3] / eye[3], pos[i, j])
+    a = shading.ssao(gb.positions, gb.normals, scene.projection, gb.mask, seed=2)
+    b = shading.ssao(pos, gb.normals, scene.projection, mask, seed=2)
+    assert np.allclose(a, b, atol=1e-12)
+
+
+@pytest.mark.parametrize("bad, message", [
+    (lambda d: np.where(d == d.max(), np.nan, d), "depth must not contain NaN"),
+    (lambda d: d * 2, "depth must lie in \\[0, 1\\]"),
+    (lambda d: d[0], "depth must be a 2D buffer"),
+])
+def test_a_bad_depth_buffer_is_named(bad, message):
+    scene = shading.ssao_test_scene()
+    gb = shading.g_buffer(scene.vertices, scene.faces, scene.view, scene.projection, 16, 16)
+    depth = np.where(gb.mask, gb.depth, 0.3)
+    with pytest.raises(ValueError, match=message):
+        shading.positions_from_depth(bad(depth), scene.projection)

@@ -137,7 +137,7 @@ from .radiometry import (QUANTITIES, PointIrradiance, Quantity, cone_solid_angle
     patch_solid_angle, point_light_irradiance, polygon_light_irradiance, polygon_solid_angle,
     small_light_irradiance, spherical_region_solid_angle)
 from .ssao import (GBuffer, RayTracedOcclusion, SSAOScene, box_blur, g_buffer,
-    ray_traced_occlusion, ssao, ssao_kernel, ssao_test_scene)
+    positions_from_depth, ray_traced_occlusion, ssao, ssao_kernel, ssao_test_scene)
 from .brdf import (BRDFCheck, blinn_phong_brdf, blinn_phong_normalization, check_brdf,
     combined_brdf, fresnel_dielectric, fresnel_schlick, hemispherical_reflectance, lambert_brdf,
     mirror_radiance, phong_brdf, phong_normalization, reflected_radiance, schlick_f0)
@@ -183,6 +183,7 @@ __all__ = [
     "phong_normalization",
     "PhongTerms",
     "point_light",
+    "positions_from_depth",
     "point_light_irradiance",
     "PointIrradiance",
     "polygon_light_irradiance",

@@ -41,7 +41,8 @@ from .interpolated import barycentric_buffers, face_normals
 from .occlusion import _tangent_frame, cosine_sample_hemisphere
 
 __all__ = ["GBuffer", "RayTracedOcclusion", "SSAOScene", "box_blur", "g_buffer",
-           "ray_traced_occlusion", "ssao", "ssao_kernel", "ssao_test_scene"]
+           "positions_from_depth", "ray_traced_occlusion", "ssao", "ssao_kernel",
+           "ssao_test_scene"]
 
 
 class GBuffer(NamedTuple):
@@ -136,6 +137,70 @@ def g_buffer(vertices, faces, view, projection, width, height):
     nv[mask] = nw[mask] @ np.linalg.inv(view[:3, :3])          # rows: (M^-T n)^T = n^T M^-1
     nv[mask] /= np.sqrt(_dot(nv[mask], nv[mask]))[:, None]
     return GBuffer(pos, nv, mask, buffers.depth, world, nw, buffers.ids)
+
+
+def positions_from_depth(depth, projection):
+    r"""View-space points of a depth buffer: what a real SSAO pass reads instead of positions.
+
+    A GPU keeps only the z-buffer's depth :math:`d \in [0, 1]` per pixel (chapter 5). The point
+    behind pixel :math:`(i, j)` of a :math:`w \times h` image is recovered by undoing the
+    viewport and the projection: its normalised device coordinates are
+    :math:`x = 2(j + \tfrac12)/w - 1`, :math:`y = 2(i + \tfrac12)/h - 1`, :math:`z = 2d - 1`,
+    and :math:`(x_e, y_e, z_e, w_e)^T = P^{-1} (x, y, z, 1)^T`, divided by :math:`w_e`.
+
+    Parameters
+    ----------
+    depth : array_like, shape (h, w)
+        Viewport depth in [0, 1], ``inf`` where nothing is drawn (the z-buffer's background).
+    projection : array_like, shape (4, 4)
+        The camera's projection (eye -> clip coordinates), invertible.
+
+    Returns
+    -------
+    positions : ndarray, shape (h, w, 3)
+        View-space points (0 where nothing is drawn).
+    mask : ndarray of bool, shape (h, w)
+        The pixels where something is drawn.
+
+    Raises
+    ------
+    ValueError
+        For NaN in `depth` (mark empty pixels with inf), depths outside [0, 1], a malformed
+        or singular projection.
+
+    Examples
+    --------
+    A square facing the camera 3 units away: every covered pixel comes back at z = -3.
+
+    >>> P = viewing.perspective(np.radians(60), 1.0, 1.0, 10.0)
+    >>> square = [[-1, -1, -3], [1, -1, -3], [1, 1, -3], [-1, 1, -3]]
+    >>> gb = g_buffer(square, [[0, 1, 2], [0, 2, 3]], np.eye(4), P, 8, 8)
+    >>> pos, mask = positions_from_depth(gb.depth, P)
+    >>> bool(np.array_equal(mask, gb.mask)), bool(np.allclose(pos[mask, 2], -3))
+    (True, True)
+    """
+    d = np.asarray(depth, dtype=float)
+    if d.ndim != 2 or min(d.shape) < 1:
+        raise ValueError(f"depth must be a 2D buffer (height, width), got shape {d.shape}")
+    if np.isnan(d).any():
+        i, j = np.argwhere(np.isnan(d))[0]
+        raise ValueError(f"depth must not contain NaN (at row {i}, column {j}): mark pixels "
+                         "where nothing is drawn with inf, as the z-buffer does")
+    mask = np.isfinite(d)
+    if np.any(d[mask] < -1e-12) or np.any(d[mask] > 1 + 1e-12) or np.isneginf(d).any():
+        raise ValueError("depth must lie in [0, 1] (viewport depth; inf where nothing is drawn)")
+    proj = as_matrix(projection, "projection", (4,))
+    if abs(np.linalg.det(proj)) < 1e-300:
+        raise ValueError("projection must be invertible to recover points from depths")
+    h, w = d.shape
+    x = 2 * (np.arange(w) + 0.5) / w - 1
+    y = 2 * (np.arange(h) + 0.5) / h - 1
+    xx, yy = np.meshgrid(x, y)
+    ndc = np.stack([xx, yy, 2 * np.where(mask, d, 0.5) - 1, np.ones_like(xx)], axis=-1)
+    eye = ndc @ np.linalg.inv(proj).T
+    pos = eye[..., :3] / eye[..., 3:]
+    pos[~mask] = 0.0
+    return pos, mask
 
 
 def ssao_kernel(samples, falloff="linear", seed=None):
