@@ -189,9 +189,11 @@ class Bench:
                         "recv": recvs[-1] if recvs else None})
         return out
 
-    def continuous(self, view, start, path, seconds=2.0, interval=0.016):
+    def continuous(self, view, start, path, seconds=2.0, interval=0.016, min_moves=20):
         """Mouse down at `start`, moves along ``path(fraction)`` for `seconds` (one move per
-        `interval`), mouse up. Returns (frames per second, behind at release in ms, moves)."""
+        `interval`) and for at least `min_moves` moves (on a loaded machine one move can take
+        100 ms to send), mouse up. Returns (frames per second, behind at release in ms,
+        moves)."""
         mouse = self.page.mouse
         self.wait_quiet(view)
         mouse.move(*start)
@@ -201,8 +203,9 @@ class Bench:
         t0 = self.page.evaluate("() => performance.timeOrigin + performance.now()")
         began = time.monotonic()
         moves = 0
-        while time.monotonic() - began < seconds:
-            fraction = (time.monotonic() - began) / seconds
+        while time.monotonic() - began < seconds or moves < min_moves:
+            # along the path as far as the slower of the two clocks allows
+            fraction = min(1.0, (time.monotonic() - began) / seconds, moves / min_moves)
             mouse.move(*path(fraction))
             moves += 1
             time.sleep(max(0.0, interval - 0.002))

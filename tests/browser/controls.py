@@ -248,9 +248,11 @@ def wait_until_steady(view, timeout=10.0):
     return current
 
 
-def wait_for_return(view, before, tolerance, timeout=6.0):
+def wait_for_return(view, before, tolerance, timeout=20.0):
     """Snapshots until the picture is back to `before` (within `tolerance` pixels); returns
-    the number of pixels still different."""
+    the number of pixels still different. The wait is long because on a loaded machine the
+    kernel may still be drawing the frames of the steps in between (seen: an isoline slider
+    back at its value, and its picture 6 s later not yet)."""
     deadline = time.monotonic() + timeout
     while True:
         left = picture_change(before, snapshot(view))

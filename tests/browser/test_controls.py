@@ -19,8 +19,6 @@ JupyterLab's log console or the server log (where VTK's and a dying kernel's mes
 import re
 from pathlib import Path
 
-import pytest
-
 from .controls import drive
 from .look import look_problems
 from .lab import (ROOT, WIDGET_VIEW, NotebookPage, PageKernel, expected_widget_cells,
@@ -75,8 +73,8 @@ def check_rendered(notebook, path):
         assert drawn.count() > 0, f"widget {k} shows no figure (ipympl canvas or image)"
 
 
-@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: Path(p).stem)
-def test_lesson_runs_and_every_control_of_every_explorer_changes_its_picture(lab, browser, path):
+def drive_lesson(lab, browser, path):
+    """Run All in one lesson, then drive every control of every explorer it shows."""
     log = lab.tmp / "server.log"
     log_start = log.stat().st_size
     notebook = NotebookPage(browser, lab, path).open().run_all()
@@ -132,3 +130,24 @@ def test_lesson_runs_and_every_control_of_every_explorer_changes_its_picture(lab
     finally:
         kernel.close()
         notebook.close()
+
+
+def _lesson_class(path):
+    """A test class for one lesson: ``--dist loadscope`` gives each class to one worker, so the
+    lessons spread over the workers (one module of parametrized tests would keep them all on
+    one worker, about twenty minutes end to end)."""
+    def test_lesson_runs_and_every_control_of_every_explorer_changes_its_picture(
+            self, lab, browser):
+        drive_lesson(lab, browser, path)
+
+    name = "TestLesson_" + re.sub(r"\W", "_", Path(path).stem)
+    return name, type(name, (), {
+        "__doc__": f"{path}: Run All, then every control of every explorer.",
+        "test_lesson_runs_and_every_control_of_every_explorer_changes_its_picture":
+            test_lesson_runs_and_every_control_of_every_explorer_changes_its_picture})
+
+
+for _path in NOTEBOOKS:
+    _name, _cls = _lesson_class(_path)
+    globals()[_name] = _cls
+del _path, _name, _cls
