@@ -77,6 +77,9 @@ Files
     Chapter 14 (lesson section 5): procedural textures.
 ``mipmaps.py``
     Chapter 14 (lesson section 6): aliasing, mipmaps and trilinear filtering.
+``hierarchies.py``
+    Chapter 14 (textbook 14.9): texture hierarchies: level maps from screen-space
+    derivatives, anisotropic filtering's level, a pyramid's memory, clipmaps, virtual textures.
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
@@ -91,6 +94,9 @@ from .procedural import (checkerboard, marble, perlin_noise, stripes, turbulence
     wood)
 from .mipmaps import (AliasingDemo, aliasing_demo, mip_level, mipmap, texel_footprint,
     trilinear_sample)
+from .hierarchies import (ClipmapLayout, PlaneView, PyramidMemory, TileCache,
+    anisotropic_level, clipmap, clipmap_level_used, clipmap_window, footprint_axes, level_map,
+    level_shapes, pyramid_memory, receding_plane, tile_counts, tiles_needed, uv_derivatives)
 
 __all__ = [
     "AliasingDemo",
@@ -121,4 +127,8 @@ __all__ = [
     "uv_grid",
     "value_noise",
     "wood",
+    # hierarchies.py
+    "ClipmapLayout", "PlaneView", "PyramidMemory", "TileCache", "anisotropic_level", "clipmap",
+    "clipmap_level_used", "clipmap_window", "footprint_axes", "level_map", "level_shapes",
+    "pyramid_memory", "receding_plane", "tile_counts", "tiles_needed", "uv_derivatives",
 ]
