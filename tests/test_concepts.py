@@ -805,3 +805,25 @@ def test_fact_ch18_marching_cubes_sphere_is_closed_manifold():
     verts, faces, _, _ = marching_cubes(x ** 2 + y ** 2 + z ** 2, 1.0)
     mesh = trimesh.Trimesh(verts, faces)
     assert mesh.is_watertight and mesh.euler_number == 2
+
+
+def test_fact_ch14_hierarchies():
+    from course_lib import texturing
+    # the 4/3 and 8/7 bounds: closed forms of the series against summed level sizes
+    assert "quarter" in answer_text("ch14-pyramid-bound")
+    for n in range(1, 11):
+        side = 2 ** n
+        two = sum((side >> k) ** 2 for k in range(n + 1))
+        three = sum((side >> k) ** 3 for k in range(n + 1))
+        assert two == (4 ** (n + 1) - 1) // 3 < 4 / 3 * side ** 2
+        assert three < 8 / 7 * side ** 3
+    # anisotropic filtering: the level of the short axis, N samples along the long one
+    assert "short axis" in answer_text("ch14-anisotropic")
+    lam, samples, _ = texturing.anisotropic_level((256, 256), 2 / 256, 0, 0, 16 / 256)
+    iso = texturing.mip_level(texturing.texel_footprint((256, 256), 2 / 256, 0, 0, 16 / 256))
+    assert float(lam) == 1.0 and int(samples) == 8 and float(iso) == 4.0
+    # clipmaps: memory grows with the number of levels, not with the texture's area
+    assert truth("ch14-clipmap-virtual")
+    small, big = texturing.clipmap((4096, 4096), 512), texturing.clipmap((65536, 65536), 512)
+    assert big.full_texels / small.full_texels > 200
+    assert big.resident_texels - small.resident_texels == 4 * 512 ** 2

@@ -367,3 +367,17 @@ def test_tile_cache_errors():
     with pytest.raises(ValueError, match=r"level must be in \[0, 2\]"):
         cache.page_table(5)
     assert cache.request([]) == {"hits": 0, "misses": 0, "evicted": []}
+
+
+def test_quad_differences_against_a_loop_for_odd_sizes():
+    for h, w in ((5, 7), (2, 2), (6, 3), (3, 2)):
+        u, v = RNG.random((2, h, w))
+        du_dx, dv_dx, du_dy, dv_dy = T.uv_derivatives(u, v)
+        for i in range(h):
+            for j in range(w):
+                j0 = j - j % 2 if j - j % 2 + 1 < w else w - 2      # the quad's pair
+                i0 = i - i % 2 if i - i % 2 + 1 < h else h - 2
+                assert du_dx[i, j] == u[i, j0 + 1] - u[i, j0]
+                assert dv_dx[i, j] == v[i, j0 + 1] - v[i, j0]
+                assert du_dy[i, j] == u[i0 + 1, j] - u[i0, j]
+                assert dv_dy[i, j] == v[i0 + 1, j] - v[i0, j]

@@ -129,14 +129,18 @@ def uv_derivatives(u, v):
                          f"{u.shape}")
     if not (np.isfinite(u).all() and np.isfinite(v).all()):
         raise ValueError("u and v must be finite (a pixel that sees no surface has no (u, v))")
-    h, w = u.shape
-    j0 = np.arange(w) & ~1
-    j1 = j0 + 1
-    j0, j1 = np.where(j1 < w, j0, w - 2), np.where(j1 < w, j1, w - 1)
-    i0 = np.arange(h) & ~1
-    i1 = i0 + 1
-    i0, i1 = np.where(i1 < h, i0, h - 2), np.where(i1 < h, i1, h - 1)
-    return (u[:, j1] - u[:, j0], v[:, j1] - v[:, j0], u[i1] - u[i0], v[i1] - v[i0])
+    return (_pair_diff(u, 1), _pair_diff(v, 1), _pair_diff(u, 0), _pair_diff(v, 0))
+
+
+def _pair_diff(a, axis):
+    """Differences within pairs (0, 1), (2, 3), ... along `axis`, repeated for both members;
+    an odd last member takes the difference to its neighbour."""
+    a = np.moveaxis(a, axis, 0)
+    n = a.shape[0]
+    d = np.repeat(a[1:n - n % 2:2] - a[0:n - n % 2:2], 2, axis=0)
+    if n % 2:
+        d = np.concatenate([d, (a[-1] - a[-2])[None]], axis=0)
+    return np.moveaxis(d, 0, axis)
 
 
 def level_map(texture_shape, u, v, levels=None):

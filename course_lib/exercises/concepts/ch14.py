@@ -78,4 +78,48 @@ QUESTIONS = [
         ("The height of the surface", "That is a displacement or bump map."),
         ("The shadow of the object", "Shadow maps store depths from the light."),
         correct=1),
+    # texture hierarchies (textbook 14.9)
+    _mc(14, "ch14-pyramid-bound",
+        "Why does the full mipmap chain of a square 2D texture cost less than $\\tfrac43$ of "
+        "the texture, and what is the bound for a 3D (volume) texture?",
+        ("Each level has a quarter of the texels of the one before, so the chain is "
+         "$N(1 + \\tfrac14 + \\tfrac1{16} + \\dots) < \\tfrac43 N$; in 3D each level has an "
+         "eighth: $\\tfrac87 N$",
+         "Halving every side divides the texels by $2^d$ in $d$ dimensions; the geometric series "
+         "sums to $1/(1 - 2^{-d})$."),
+        ("Each level has half the texels, so the chain is under $2N$; in 3D $\\tfrac43 N$",
+         "Halving **both** sides quarters a 2D level; $1 + \\tfrac12 + \\dots = 2$ is the series "
+         "of a 1D texture."),
+        ("Because the 1 x 1 level is not stored; in 3D the bound is the same",
+         "The 1 x 1 level is stored (it is the average colour), and a volume's levels shrink "
+         "by 8, so its bound is smaller: $\\tfrac87$."),
+        ("Because the levels are compressed; in 3D $2N$",
+         "Nothing is compressed: the count follows from the sizes alone."),
+        correct=0),
+    _mc(14, "ch14-anisotropic",
+        "A floor seen at a grazing angle looks blurred in the distance with trilinear "
+        "filtering. What does anisotropic filtering change?",
+        ("It picks the level of the footprint's short axis and averages several samples "
+         "along the long axis",
+         "The footprint is a long thin ellipse; one isotropic level must cover its long axis "
+         "and so blurs the short one. $N \\approx P_{max}/P_{min}$ samples at "
+         "$\\log_2 P_{min}$ keep it sharp without aliasing."),
+        ("It uses a finer level everywhere", "A finer level with one sample aliases along "
+         "the long axis: the moire comes back."),
+        ("It blends between the two nearest levels", "That is trilinear filtering, which "
+         "still uses a square (isotropic) footprint."),
+        ("It stores extra mipmap levels squeezed in one direction only", "Those are "
+         "rip-maps, another remedy (4 times the memory); anisotropic filtering as GPUs do it "
+         "uses the ordinary mip chain."),
+        correct=0),
+    _tf(14, "ch14-clipmap-virtual",
+        "Clipmaps and virtual textures let a renderer use textures far larger than memory, "
+        "because a view only needs fine texels near the viewer and coarse texels further away.",
+        True,
+        "A pixel needs level $\\log_2 \\rho$, which grows with distance: a clipmap keeps a "
+        "fixed window of every fine level around the viewer (memory grows with the number of "
+        "levels, not the texture's area); a virtual texture loads only the tiles the current "
+        "view samples and falls back to a coarser resident tile until a missing one arrives.",
+        "It is true: the memory a view needs is set by the screen's pixels, not by the "
+        "texture's size."),
 ]
