@@ -77,6 +77,9 @@ Files
     Chapter 14 (lesson section 5): procedural textures.
 ``mipmaps.py``
     Chapter 14 (lesson section 6): aliasing, mipmaps and trilinear filtering.
+``relief.py``
+    Chapter 14 (textbook 14.7.1, 14.7.2): bump mapping, tangent frames, normal maps, and
+    displacement mapping for contrast.
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
@@ -91,6 +94,10 @@ from .procedural import (checkerboard, marble, perlin_noise, stripes, turbulence
     wood)
 from .mipmaps import (AliasingDemo, aliasing_demo, mip_level, mipmap, texel_footprint,
     trilinear_sample)
+from .relief import (bricks_height, bump_normal, bump_normal_tangent, bumps_height,
+    decode_normals, displace, encode_normals, height_gradient, height_gradient_at, noise_height,
+    normal_map_from_height, object_to_tangent, shade_normals, tangent_to_object,
+    triangle_tangent_frame, vertex_tangent_frames)
 
 __all__ = [
     "AliasingDemo",
@@ -121,4 +128,9 @@ __all__ = [
     "uv_grid",
     "value_noise",
     "wood",
+    # relief mapping (relief.py)
+    "bricks_height", "bump_normal", "bump_normal_tangent", "bumps_height", "decode_normals",
+    "displace", "encode_normals", "height_gradient", "height_gradient_at", "noise_height",
+    "normal_map_from_height", "object_to_tangent", "shade_normals", "tangent_to_object",
+    "triangle_tangent_frame", "vertex_tangent_frames",
 ]
