@@ -369,10 +369,9 @@ def vertex_tangent_frames(vertices, faces, uvs, normals=None):
                               np.cross(v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]])))
     tu = tf / np.sqrt(_dot(tf, tf))[:, None] * area[:, None]
     bu = bf / np.sqrt(_dot(bf, bf))[:, None] * area[:, None]
-    t_sum, b_sum = np.zeros_like(v), np.zeros_like(v)
-    for k in range(3):
-        np.add.at(t_sum, f[:, k], tu)
-        np.add.at(b_sum, f[:, k], bu)
+    corners = f.ravel()                         # every face's weight to each of its corners
+    t_sum = np.stack([np.bincount(corners, np.repeat(tu[:, c], 3), len(v)) for c in range(3)], 1)
+    b_sum = np.stack([np.bincount(corners, np.repeat(bu[:, c], 3), len(v)) for c in range(3)], 1)
     n = vertex_normals(v, f) if normals is None else _normalize(
         as_points(normals, "normals", dims=3), "normals")
     if n.shape != v.shape:
