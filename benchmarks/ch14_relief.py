@@ -1,7 +1,9 @@
 """Chapter 14, relief mapping: normal-mapped shading of a 512 x 512 image (decode an 8-bit
-tangent-space map, TBN to object space, Blinn-Phong) against shading the same pixels with their
-unperturbed normals; per-vertex tangent frames against VTK's vtkPolyDataTangents on the same
-mesh; and the relief explorer's updates."""
+tangent-space map, TBN to object space, Blinn-Phong) against VTK's PBR renderer drawing a plane
+with the same normal texture into a 512 x 512 off-screen window (render and read back; Mesa's
+EGL here) and against shading the same pixels with their unperturbed normals; per-vertex
+tangent frames against VTK's vtkPolyDataTangents on the same mesh; the relief explorer's
+updates."""
 import numpy as np
 
 from benchmarks import operation_row
@@ -43,6 +45,32 @@ def _vtk_tangents(verts, faces, uv):
     return run
 
 
+def _vtk_pbr_frame(rgb8, size):
+    """A callable rendering a unit plane with `rgb8` as its PBR normal texture, off screen."""
+    from course_lib import draw
+
+    draw.configure_offscreen_vtk()
+    import pyvista as pv
+    import vtk
+
+    plane = pv.Plane(i_size=1, j_size=1, i_resolution=1, j_resolution=1)
+    tangents = vtk.vtkPolyDataTangents()
+    tangents.SetInputData(plane.triangulate().compute_normals())
+    tangents.Update()
+    plotter = pv.Plotter(off_screen=True, window_size=(size, size))
+    actor = plotter.add_mesh(pv.wrap(tangents.GetOutput()), color="white", pbr=True,
+                             metallic=0.0, roughness=0.5)
+    actor.GetProperty().SetNormalTexture(pv.Texture(rgb8))
+    plotter.camera_position = "xy"
+    plotter.add_light(pv.Light(position=(1, 1, 2), light_type="scene light"))
+    plotter.screenshot(return_img=True)
+
+    def frame():
+        plotter.render()
+        return plotter.screenshot(return_img=True)
+    return frame
+
+
 def operations(quick=False):
     """Normal-mapped Blinn-Phong shading of a size x size image (the ratio is over plain
     Blinn-Phong of the same pixels: the price of decode + TBN), and per-vertex tangent frames of
@@ -67,8 +95,12 @@ def operations(quick=False):
                                     model="blinn-phong")
 
     rows = [operation_row(
-        f"normal-mapped Blinn-Phong, {size}x{size} (decode 8-bit + TBN + shade; vs shading the "
-        "unperturbed normals)", size * size, normal_mapped,
+        f"normal-mapped Blinn-Phong, {size}x{size} (decode 8-bit + TBN + shade; vs VTK's PBR "
+        "normal texture on a plane, render + read back)", size * size, normal_mapped,
+        _vtk_pbr_frame(rgb8, size), "VTK PBR off screen (EGL, Mesa)", repeat),
+        operation_row(
+        f"normal-mapped Blinn-Phong, {size}x{size} (vs shading the unperturbed normals: the "
+        "price of decode + TBN)", size * size, normal_mapped,
         lambda: relief.shade_normals(n, light, model="blinn-phong"),
         "shade_normals of the flat normals", repeat)]
     nu, nv = (64, 32) if quick else (256, 128)
