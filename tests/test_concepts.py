@@ -827,3 +827,21 @@ def test_fact_ch14_hierarchies():
     small, big = texturing.clipmap((4096, 4096), 512), texturing.clipmap((65536, 65536), 512)
     assert big.full_texels / small.full_texels > 200
     assert big.resident_texels - small.resident_texels == 4 * 512 ** 2
+
+
+def test_fact_ch14_relief():
+    from course_lib.texturing import relief
+    # a normal close to the tangent frame's N encodes as light blue (0.5, 0.5, 1)
+    assert "0.5, 0.5, 1" in answer_text("ch14-normal-map-blue")
+    assert np.allclose(relief.encode_normals([0, 0, 1]), [0.5, 0.5, 1])
+    tilted = relief.encode_normals([0.2, -0.1, 1.0])
+    assert tilted[2] > 0.97 and abs(tilted[0] - 0.5) < 0.11 and abs(tilted[1] - 0.5) < 0.06
+    # bump mapping keeps the points (outline), displacement moves them
+    assert "outline" in BY_KEY["ch14-relief-limits"].explanations[1]
+    p = np.array([[1.0, 0, 0]])
+    assert np.allclose(relief.displace(p, p, [1.0], 0.1), [[1.1, 0, 0]])
+    # a mirrored texture gives handedness -1, the tangent-space answer uses it
+    assert "handedness" in answer_text("ch14-normal-map-space")
+    _, _, _, w = relief.vertex_tangent_frames([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]],
+                                              [[0, 0], [-1, 0], [0, 1]])
+    assert np.all(w == -1)

@@ -35,6 +35,7 @@ from ._ch14.barycentric import BarycentricCoordinates, InterpolateColour, Perspe
 from ._ch14.mappings import CylindricalMap, PlanarMap, SphericalMap
 from ._ch14.mipmaps import Checkerboard, MipLevel
 from ._ch14.hierarchies import ClipmapMemory, PyramidMemory
+from ._ch14.relief import DecodeNormalTexel, PerturbedNormal, TangentFrame
 
 __all__ = [
     "EXERCISES",
@@ -51,6 +52,8 @@ __all__ = [
     "WrapModes",
     "PyramidMemory",
     "ClipmapMemory",
+    # relief mapping
+    "DecodeNormalTexel", "PerturbedNormal", "TangentFrame",
 ]
 
 #: The exercises of chapter 14, in the order of the solutions notebook.
@@ -68,4 +71,8 @@ EXERCISES = (
     Checkerboard,
     PyramidMemory,
     ClipmapMemory,
+    # relief mapping
+    PerturbedNormal,
+    TangentFrame,
+    DecodeNormalTexel,
 )

@@ -80,6 +80,9 @@ Files
 ``hierarchies.py``
     Chapter 14 (textbook 14.9): texture hierarchies: level maps from screen-space
     derivatives, anisotropic filtering's level, a pyramid's memory, clipmaps, virtual textures.
+``relief.py``
+    Chapter 14 (textbook 14.7.1, 14.7.2): bump mapping, tangent frames, normal maps, and
+    displacement mapping for contrast.
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
@@ -97,6 +100,10 @@ from .mipmaps import (AliasingDemo, aliasing_demo, mip_level, mipmap, texel_foot
 from .hierarchies import (ClipmapLayout, PlaneView, PyramidMemory, TileCache,
     anisotropic_level, clipmap, clipmap_level_used, clipmap_window, footprint_axes, level_map,
     level_shapes, pyramid_memory, receding_plane, tile_counts, tiles_needed, uv_derivatives)
+from .relief import (bricks_height, bump_normal, bump_normal_tangent, bumps_height,
+    decode_normals, displace, encode_normals, height_gradient, height_gradient_at, noise_height,
+    normal_map_from_height, object_to_tangent, shade_normals, tangent_to_object,
+    triangle_tangent_frame, vertex_tangent_frames)
 
 __all__ = [
     "AliasingDemo",
@@ -131,4 +138,9 @@ __all__ = [
     "ClipmapLayout", "PlaneView", "PyramidMemory", "TileCache", "anisotropic_level", "clipmap",
     "clipmap_level_used", "clipmap_window", "footprint_axes", "level_map", "level_shapes",
     "pyramid_memory", "receding_plane", "tile_counts", "tiles_needed", "uv_derivatives",
+    # relief mapping (relief.py)
+    "bricks_height", "bump_normal", "bump_normal_tangent", "bumps_height", "decode_normals",
+    "displace", "encode_normals", "height_gradient", "height_gradient_at", "noise_height",
+    "normal_map_from_height", "object_to_tangent", "shade_normals", "tangent_to_object",
+    "triangle_tangent_frame", "vertex_tangent_frames",
 ]

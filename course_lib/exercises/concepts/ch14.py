@@ -122,4 +122,47 @@ QUESTIONS = [
         "view samples and falls back to a coarser resident tile until a missing one arrives.",
         "It is true: the memory a view needs is set by the screen's pixels, not by the "
         "texture's size."),
+    # relief mapping (bump, normal and displacement maps)
+    _mc(14, "ch14-relief-limits",
+        "A brick wall is bump mapped with deep mortar grooves. What can the bump map *not* "
+        "show?",
+        ("Light and dark sides of each brick that follow the light", "It can: that is exactly "
+         "what the perturbed normals change, pixel by pixel."),
+        ("Bricks that stick out of the wall's outline and shadow each other at a grazing "
+         "light", "Right: the points do not move, so the outline stays flat and no brick can "
+         "hide or shadow another; that needs displacement (or parallax/shadow tricks)."),
+        ("Highlights on the edges of the bricks", "It can: the specular term uses the perturbed "
+         "normal too."),
+        ("A different look when the light moves", "It can: the shading is recomputed with the "
+         "new light direction and the bumped normals."),
+        correct=1),
+    _mc(14, "ch14-normal-map-blue",
+        "Why do tangent-space normal maps look mostly light blue?",
+        ("Blue is the colour channel with the most bits", "All three channels have the same "
+         "8 bits."),
+        ("Most perturbed normals are close to the unperturbed normal $(0, 0, 1)$ of the "
+         "tangent frame, which encodes as $(0.5, 0.5, 1)$", "Right: $c = (n + 1)/2$ maps "
+         "$n_z \\approx 1$ to a full blue channel and $n_x, n_y \\approx 0$ to mid red and "
+         "green."),
+        ("The blue channel stores the height", "A normal map stores a direction; the height "
+         "is in a bump or displacement map."),
+        ("Blue marks the front faces", "Nothing about facing is stored; the colour is the "
+         "normal's components."),
+        correct=1),
+    _mc(14, "ch14-normal-map-space",
+        "A character's mesh is skinned (it bends at the joints) and its left half uses the "
+        "right half's texture mirrored. Which normal map works?",
+        ("An object-space map: it stores the final normals directly", "Those normals are fixed "
+         "in the object's frame: when an arm bends they do not turn with it, and a mirrored "
+         "copy would need its own texels."),
+        ("A tangent-space map, with per-vertex (T, B, N) that deform with the mesh and a "
+         "handedness sign for the mirrored half", "Right: the stored normal is relative to "
+         "the surface, so it follows any deformation, and the sign $w$ flips $B$ where the "
+         "texture is mirrored."),
+        ("Either: the two kinds store the same numbers", "They differ: an object-space texel "
+         "is a direction in the object's frame, a tangent-space texel one relative to the "
+         "surface."),
+        ("Neither: a bending mesh needs displacement mapping", "A normal map works on "
+         "deforming meshes if it is in tangent space."),
+        correct=1),
 ]
