@@ -77,6 +77,12 @@ Files
     Chapter 14 (lesson section 5): procedural textures.
 ``mipmaps.py``
     Chapter 14 (lesson section 6): aliasing, mipmaps and trilinear filtering.
+``texture_transforms.py``
+    Chapter 14: texture transformations (tiling, offset, rotation, shear as 3x3 texture
+    matrices; the picture moves opposite to the matrix).
+``two_part.py``
+    Chapter 14: two-part mapping (Bier and Sloan's S-mapping onto a plane, cylinder, sphere
+    or box, and the four O-mappings).
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
@@ -91,6 +97,9 @@ from .procedural import (checkerboard, marble, perlin_noise, stripes, turbulence
     wood)
 from .mipmaps import (AliasingDemo, aliasing_demo, mip_level, mipmap, texel_footprint,
     trilinear_sample)
+from .texture_transforms import (apply_texture_matrix, texture_matrix, tile, transform_texture)
+from .two_part import (box_face, intermediate_points, intersect_intermediate, s_map,
+    two_part_map)
 
 __all__ = [
     "AliasingDemo",
@@ -121,4 +130,14 @@ __all__ = [
     "uv_grid",
     "value_noise",
     "wood",
+    # texture transformations, two-part mapping
+    "apply_texture_matrix",
+    "box_face",
+    "intermediate_points",
+    "intersect_intermediate",
+    "s_map",
+    "texture_matrix",
+    "tile",
+    "transform_texture",
+    "two_part_map",
 ]
