@@ -34,6 +34,7 @@ from ._ch14.sampling import BilinearSample, NearestSample, WrapModes
 from ._ch14.barycentric import BarycentricCoordinates, InterpolateColour, PerspectiveCorrect
 from ._ch14.mappings import CylindricalMap, PlanarMap, SphericalMap
 from ._ch14.mipmaps import Checkerboard, MipLevel
+from ._ch14.two_part import TextureTransform, TwoPartMapping
 
 __all__ = [
     "EXERCISES",
@@ -48,6 +49,8 @@ __all__ = [
     "PlanarMap",
     "SphericalMap",
     "WrapModes",
+    "TextureTransform",
+    "TwoPartMapping",
 ]
 
 #: The exercises of chapter 14, in the order of the solutions notebook.
@@ -63,4 +66,6 @@ EXERCISES = (
     PlanarMap,
     MipLevel,
     Checkerboard,
+    TextureTransform,
+    TwoPartMapping,
 )

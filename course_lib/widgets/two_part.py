@@ -10,7 +10,7 @@ from .. import draw
 from ..raytracing.intersections import intersect_box, intersect_sphere, intersect_triangles
 from ..texturing import nearest_sample
 from ..texturing.texture_transforms import apply_texture_matrix, texture_matrix, transform_texture
-from ..texturing.two_part import METHODS, SURFACES, two_part_map
+from ..texturing.two_part import SURFACES, two_part_map
 from . import _style
 from ._base import Explorer, bind, panel, slider
 
