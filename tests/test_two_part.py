@@ -44,7 +44,7 @@ def test_intersection_points_lie_on_the_surface(surface, method):
     elif surface == "cylinder":
         assert np.allclose(d[:, 0] ** 2 + d[:, 2] ** 2, s * s)
     elif surface == "plane":
-        assert np.allclose(d[:, 2], 0)
+        assert np.allclose(d[:, 2], -s)              # the plane z = c_z - s
     else:
         assert np.allclose(np.abs(d).max(axis=1), s)
     if method in ("normal", "reflected", "centroid") and surface != "plane":

@@ -23,8 +23,10 @@ A complicated object has no natural (u, v). Two-part mapping splits the problem:
    line) and take its first hit with the surface (from inside a closed surface, where it
    leaves).
 
-The intermediate surfaces, with centre :math:`c` and size :math:`s`: the plane through
-:math:`c` with normal z, its square :math:`[-s, s]^2` being texture space's unit square; the
+The intermediate surfaces, with centre :math:`c` and size :math:`s`: the plane
+:math:`z = c_z - s` behind the object (normal z; not through :math:`c`, or every centroid line
+would meet it at the centroid), its square :math:`c \pm s` in x and y being texture space's unit
+square; the
 cylinder of radius :math:`s` about the y axis through :math:`c`, :math:`v \in [0, 1]` from
 height :math:`-s` to :math:`s`; the sphere of radius :math:`s`; the cube :math:`c \pm s`, each
 face carrying the whole texture, upright and unmirrored seen from outside (the face is the
@@ -106,7 +108,8 @@ def _face_frame(face):
 def s_map(points, surface="sphere", center=(0.0, 0.0, 0.0), size=1.0):
     r"""S-mapping: texture coordinates of points of an intermediate surface.
 
-    * plane: :func:`planar_map` with normal z, the square :math:`c \pm s` -> the unit square;
+    * plane (:math:`z = c_z - s`): :func:`planar_map` with normal z, the square :math:`c \pm s`
+      in x, y -> the unit square;
     * cylinder: :func:`cylindrical_map` about y, base at :math:`c - s\hat y`, height
       :math:`2s`;
     * sphere: :func:`spherical_map` about :math:`c`;
@@ -203,8 +206,8 @@ def intersect_intermediate(origins, directions, surface="sphere", center=(0.0, 0
     --------
     >>> intersect_intermediate([[0, 0, 0], [0.5, 0, 0]], [1, 0, 0], "cylinder", size=2.0)
     array([2. , 1.5])
-    >>> intersect_intermediate([0, 0, 3], [0, 0, 1], "plane")
-    array(-3.)
+    >>> intersect_intermediate([0, 0, 3], [0, 0, 1], "plane")      # the plane z = -1
+    array(-4.)
     """
     surface, c, s = _surface(surface, center, size)
     o = as_points(origins, "origins", dims=3)
@@ -214,8 +217,8 @@ def intersect_intermediate(origins, directions, surface="sphere", center=(0.0, 0
     if surface == "box":
         return intersect_box(o, d, c - s, c + s).t
     if surface == "plane":
-        forward = intersect_plane(o, d, c, _Z).t
-        backward = intersect_plane(o, -np.asarray(d), c, _Z).t
+        forward = intersect_plane(o, d, c - s * _Z, _Z).t
+        backward = intersect_plane(o, -np.asarray(d), c - s * _Z, _Z).t
         return np.where(np.isfinite(forward), forward, -backward)
     lead = np.broadcast_shapes(o.shape, d.shape)
     oo = np.broadcast_to(o, lead).reshape(-1, 3)
@@ -287,7 +290,7 @@ def intermediate_points(points, normals=None, surface="sphere", method="normal",
     if method == "intermediate_normal":
         if surface == "plane":
             q = p.copy()
-            q[..., 2] = c[2]
+            q[..., 2] = c[2] - s
         elif surface == "sphere":
             d = _nonzero_rows(p - c, "points - center")
             q = c + s * d
