@@ -845,3 +845,22 @@ def test_fact_ch14_relief():
     _, _, _, w = relief.vertex_tangent_frames([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]],
                                               [[0, 0], [-1, 0], [0, 1]])
     assert np.all(w == -1)
+
+
+def test_fact_ch14_two_part():
+    from course_lib.texturing import texture_transforms, two_part
+    assert "intermediate surface" in answer_text("ch14-two-part-purpose")
+    assert "reflected" in answer_text("ch14-two-part-view-dependent")
+    pts = RNG.normal(size=(30, 3)) * 0.3
+    nrm = RNG.normal(size=(30, 3))
+    for method in two_part.METHODS:
+        a = two_part.two_part_map(pts, nrm, "sphere", method, size=2, eye=(0, 0, 5))
+        b = two_part.two_part_map(pts, nrm, "sphere", method, size=2, eye=(4, 1, 0))
+        assert np.allclose(a, b) == (method != "reflected"), method
+    # the picture moves opposite to the offset: the texel at u in [0, 1/8) shows at 7/8 - 1
+    assert not truth("ch14-texture-matrix-opposite")
+    tex = np.zeros((1, 8))
+    tex[0, 2] = 1.0                                   # a feature at u = 0.25..0.375
+    moved = texture_transforms.transform_texture(tex, texture_transforms.texture_matrix(
+        offset=(0.25, 0)), filter="nearest")
+    assert moved[0, 0] == 1.0                         # now at u = 0..0.125: moved by -0.25

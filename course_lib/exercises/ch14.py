@@ -36,6 +36,7 @@ from ._ch14.mappings import CylindricalMap, PlanarMap, SphericalMap
 from ._ch14.mipmaps import Checkerboard, MipLevel
 from ._ch14.hierarchies import ClipmapMemory, PyramidMemory
 from ._ch14.relief import DecodeNormalTexel, PerturbedNormal, TangentFrame
+from ._ch14.two_part import TextureTransform, TwoPartMapping
 
 __all__ = [
     "EXERCISES",
@@ -54,6 +55,8 @@ __all__ = [
     "ClipmapMemory",
     # relief mapping
     "DecodeNormalTexel", "PerturbedNormal", "TangentFrame",
+    "TextureTransform",
+    "TwoPartMapping",
 ]
 
 #: The exercises of chapter 14, in the order of the solutions notebook.
@@ -75,4 +78,6 @@ EXERCISES = (
     PerturbedNormal,
     TangentFrame,
     DecodeNormalTexel,
+    TextureTransform,
+    TwoPartMapping,
 )

@@ -83,6 +83,12 @@ Files
 ``relief.py``
     Chapter 14 (textbook 14.7.1, 14.7.2): bump mapping, tangent frames, normal maps, and
     displacement mapping for contrast.
+``texture_transforms.py``
+    Chapter 14: texture transformations (tiling, offset, rotation, shear as 3x3 texture
+    matrices; the picture moves opposite to the matrix).
+``two_part.py``
+    Chapter 14: two-part mapping (Bier and Sloan's S-mapping onto a plane, cylinder, sphere
+    or box, and the four O-mappings).
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
@@ -104,6 +110,9 @@ from .relief import (bricks_height, bump_normal, bump_normal_tangent, bumps_heig
     decode_normals, displace, encode_normals, height_gradient, height_gradient_at, noise_height,
     normal_map_from_height, object_to_tangent, shade_normals, tangent_to_object,
     triangle_tangent_frame, vertex_tangent_frames)
+from .texture_transforms import (apply_texture_matrix, texture_matrix, tile, transform_texture)
+from .two_part import (box_face, intermediate_points, intersect_intermediate, s_map,
+    two_part_map)
 
 __all__ = [
     "AliasingDemo",
@@ -143,4 +152,14 @@ __all__ = [
     "displace", "encode_normals", "height_gradient", "height_gradient_at", "noise_height",
     "normal_map_from_height", "object_to_tangent", "shade_normals", "tangent_to_object",
     "triangle_tangent_frame", "vertex_tangent_frames",
+    # texture transformations, two-part mapping
+    "apply_texture_matrix",
+    "box_face",
+    "intermediate_points",
+    "intersect_intermediate",
+    "s_map",
+    "texture_matrix",
+    "tile",
+    "transform_texture",
+    "two_part_map",
 ]

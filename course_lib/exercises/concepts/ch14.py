@@ -165,4 +165,37 @@ QUESTIONS = [
         ("Neither: a bending mesh needs displacement mapping", "A normal map works on "
          "deforming meshes if it is in tangent space."),
         correct=1),
+    # texture transformations and two-part mapping
+    _mc(14, "ch14-two-part-purpose",
+        "What problem does two-part (S-mapping + O-mapping) texture mapping solve?",
+        ("It gives (u, v) to an arbitrary object that has no natural parametrization, through a "
+         "simple intermediate surface that has one", "The S-mapping puts the texture on a "
+         "plane, cylinder, sphere or box; the O-mapping carries each object point to that "
+         "surface."),
+        ("It removes aliasing under minification", "That is mipmapping's job; two-part mapping "
+         "only decides which (u, v) a point gets."),
+        ("It makes the mapping free of distortion on every object", "It cannot: the O-mapping "
+         "stretches the texture wherever the object's shape departs from the intermediate "
+         "surface."),
+        ("It interpolates texture coordinates across triangles perspective-correctly",
+         "That is done after the mapping, by the rasterizer with 1/w."),
+        correct=0),
+    _mc(14, "ch14-two-part-view-dependent",
+        "Which of the four O-mappings changes when only the eye moves?",
+        ("The object's normal", "The normal belongs to the object: it does not depend on the "
+         "eye."),
+        ("The line through the object's centroid", "The centroid and the point are fixed on "
+         "the object."),
+        ("The intermediate surface's normal", "Only the two surfaces are involved."),
+        ("The reflected view ray: that is environment mapping", "The view direction is "
+         "mirrored about the normal, so the texture slides over the object as the eye moves, "
+         "like a reflection."),
+        correct=3),
+    _tf(14, "ch14-texture-matrix-opposite",
+        "Adding an offset of +0.25 to the texture coordinates (the texture matrix T(0.25, 0)) "
+        "moves the picture on the surface by +0.25 in u.", False,
+        "The matrix maps coordinates: the point that used to see u = 0 now sees u = 0.25, so "
+        "the feature at u = 0.25 appears where u = 0 was; the picture moves by -0.25. To move "
+        "it by +0.25 use the inverse matrix T(-0.25, 0).",
+        "Right: the picture moves the opposite way, by -0.25 (the inverse of the matrix)."),
 ]
