@@ -77,6 +77,9 @@ Files
     Chapter 14 (lesson section 5): procedural textures.
 ``mipmaps.py``
     Chapter 14 (lesson section 6): aliasing, mipmaps and trilinear filtering.
+``environment.py``
+    Chapter 14 (lesson section: environment mapping): cube maps (the OpenGL face table),
+    sphere maps, latitude-longitude maps, mirror look-ups and their limitations.
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
@@ -91,6 +94,11 @@ from .procedural import (checkerboard, marble, perlin_noise, stripes, turbulence
     wood)
 from .mipmaps import (AliasingDemo, aliasing_demo, mip_level, mipmap, texel_footprint,
     trilinear_sample)
+from .environment import (CUBE_FACES, cube_cross, cube_face_coordinates, cube_face_direction,
+    cube_map_from_function, distant_environment_error, environment_lookup, latlong_coordinates,
+    latlong_direction, latlong_map_from_function, mirror_sphere, reflect_view,
+    sample_cube_map, sample_latlong_map, sample_sphere_map, sphere_map_coordinates,
+    sphere_map_direction, sphere_map_from_function)
 
 __all__ = [
     "AliasingDemo",
@@ -121,4 +129,23 @@ __all__ = [
     "uv_grid",
     "value_noise",
     "wood",
+    # environment mapping
+    "CUBE_FACES",
+    "cube_cross",
+    "cube_face_coordinates",
+    "cube_face_direction",
+    "cube_map_from_function",
+    "distant_environment_error",
+    "environment_lookup",
+    "latlong_coordinates",
+    "latlong_direction",
+    "latlong_map_from_function",
+    "mirror_sphere",
+    "reflect_view",
+    "sample_cube_map",
+    "sample_latlong_map",
+    "sample_sphere_map",
+    "sphere_map_coordinates",
+    "sphere_map_direction",
+    "sphere_map_from_function",
 ]
