@@ -89,6 +89,9 @@ Files
 ``two_part.py``
     Chapter 14: two-part mapping (Bier and Sloan's S-mapping onto a plane, cylinder, sphere
     or box, and the four O-mappings).
+``environment.py``
+    Chapter 14 (lesson section: environment mapping): cube maps (the OpenGL face table),
+    sphere maps, latitude-longitude maps, mirror look-ups and their limitations.
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
@@ -113,6 +116,11 @@ from .relief import (bricks_height, bump_normal, bump_normal_tangent, bumps_heig
 from .texture_transforms import (apply_texture_matrix, texture_matrix, tile, transform_texture)
 from .two_part import (box_face, intermediate_points, intersect_intermediate, s_map,
     two_part_map)
+from .environment import (CUBE_FACES, cube_cross, cube_face_coordinates, cube_face_direction,
+    cube_map_from_function, distant_environment_error, environment_lookup, latlong_coordinates,
+    latlong_direction, latlong_map_from_function, mirror_sphere, reflect_view,
+    sample_cube_map, sample_latlong_map, sample_sphere_map, sphere_map_coordinates,
+    sphere_map_direction, sphere_map_from_function)
 
 __all__ = [
     "AliasingDemo",
@@ -162,4 +170,23 @@ __all__ = [
     "tile",
     "transform_texture",
     "two_part_map",
+    # environment mapping
+    "CUBE_FACES",
+    "cube_cross",
+    "cube_face_coordinates",
+    "cube_face_direction",
+    "cube_map_from_function",
+    "distant_environment_error",
+    "environment_lookup",
+    "latlong_coordinates",
+    "latlong_direction",
+    "latlong_map_from_function",
+    "mirror_sphere",
+    "reflect_view",
+    "sample_cube_map",
+    "sample_latlong_map",
+    "sample_sphere_map",
+    "sphere_map_coordinates",
+    "sphere_map_direction",
+    "sphere_map_from_function",
 ]
