@@ -103,13 +103,42 @@ def test_isoline_explorer_wiring():
     ex.field.value = "circle"
     ex.size.value = 6
     assert ex.state.size == 6 and ex.state.field == "circle"
-    assert ex.level.min == pytest.approx(isovalue.example_data("circle", 6).values.min())
+    values = isovalue.example_data("circle", 6).values
+    step = ex.level.step
+    # the range covers the data, ends on whole steps, and is at most one step wider each side
+    assert ex.level.min <= values.min() < ex.level.min + step
+    assert ex.level.max - step < values.max() <= ex.level.max
+    for end in (ex.level.min, ex.level.max, ex.level.value):
+        assert abs(end / step - round(end / step)) < 1e-9
     above = ex.above.get_xydata()
     data = isovalue.example_data("circle", 6)
     assert len(above) == int((data.values >= ex.level.value).sum())
     ex.cases_box.value = False
     assert not any(len(marks.get_offsets()) for marks in ex.labels.values())
     assert ex.png()[:4] == b"\x89PNG"
+
+
+def _browser_snap(slider):
+    """What the browser's slider does when its range or step changes: snap the value to
+    min + k step (noUiSlider) and send it back to the kernel."""
+    k = round((slider.value - slider.min) / slider.step)
+    slider.value = min(max(slider.min + k * slider.step, slider.min), slider.max)
+
+
+def test_isoline_isovalue_survives_a_change_of_resolution_and_back():
+    # the browser snaps the isovalue to its slider's grid at every change of range; a grid
+    # that moved with the data's range left the value elsewhere after 12 -> 17 -> 12 samples
+    # (a browser test saw the picture not come back, now and then)
+    for field in isovalue.FIELDS:
+        ex = isovalue.IsolineExplorer(isovalue.State(field=field))
+        _browser_snap(ex.level)
+        first, picture = ex.level.value, ex.png()
+        for size in (*range(13, 18), *range(16, 11, -1)):
+            ex.size.value = size
+            _browser_snap(ex.level)
+        assert ex.level.value == pytest.approx(first, abs=1e-12), field
+        assert ex.state.level == ex.level.value
+        assert ex.png() == picture, field
 
 
 def test_isoline_example_data_rejects_unknown_fields():

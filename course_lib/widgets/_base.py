@@ -224,6 +224,52 @@ def slider(description, value, low, high, step, on_change=None, *, kind=None,
     return control
 
 
+def set_range(control, low, high, step, value=None):
+    """Give a float slider a new range whose ends and value lie on the grid of `step`.
+
+    The browser's slider snaps its value to ``min + k * step`` whenever the range or the step
+    changes, and sends the snapped value back: with a range taken from the data (``lo``,
+    ``(hi - lo) / 400``), every change of the data moved the value a little, so a slider moved
+    and moved back did not give the first picture back. Here the ends are rounded outwards to
+    whole multiples of `step` and the value (the current one, or `value`) to the nearest
+    multiple inside the range, so the browser's snap changes nothing; min, max, step and value
+    reach the browser in one message (never a value clipped to a stale range).
+
+    Examples
+    --------
+    >>> s = slider("c", 0.1, 0, 1, 0.01)
+    >>> set_range(s, -0.987, 0.9551, 0.005)
+    >>> s.min, s.max, s.step, s.value
+    (-0.99, 0.96, 0.005, 0.1)
+    >>> set_range(s, 0.2, 0.5, 0.05); s.value     # clipped into the new range
+    0.2
+    """
+    step = float(step)
+    low = round(float(np.floor(low / step)) * step, 12)
+    high = round(float(np.ceil(high / step)) * step, 12)
+    value = control.value if value is None else value
+    value = round(float(np.clip(np.round(value / step) * step, low, high)), 12)
+    with control.hold_sync():
+        control.min, control.max = -1e9, 1e9         # widen first: min <= max at every step
+        control.value = value
+        control.min, control.max = low, high
+        control.step = step
+
+
+def nice_step(span, count=400):
+    """The 1-2-2.5-5 number nearest above ``span / count``: a slider step that keeps
+    round values round.
+
+    Examples
+    --------
+    >>> nice_step(1.9), nice_step(4.5), nice_step(1.35), nice_step(0.99, 200)
+    (0.005, 0.02, 0.005, 0.005)
+    """
+    raw = float(span) / count
+    decade = 10.0 ** np.floor(np.log10(raw))
+    return float(next(m * decade for m in (1, 2, 2.5, 5, 10) if m * decade >= raw * (1 - 1e-9)))
+
+
 def checkbox(description, value=False):
     """A check box with its description right of the box, no wider than both (ipywidgets'
     default box is 300 px wide and indented by a label width, so two of them side by side

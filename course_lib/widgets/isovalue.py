@@ -33,7 +33,7 @@ from .. import draw, scivis
 from .._validate import as_choice
 from . import _style
 from ._base import (Explorer, PlotterExplorer, align, beside, bind,
-                    checkbox, labelled, panel, pyvista_faces, slider)
+                    checkbox, labelled, nice_step, panel, pyvista_faces, set_range, slider)
 
 __all__ = ["FIELDS", "IsolineExplorer", "IsosurfaceExplorer", "State", "State3D", "VOLUMES",
            "alternative_segments", "classic_marching_cubes", "example_data", "example_volume",
@@ -194,6 +194,13 @@ def scene(state):
             "reference": reference, "counts": counts, "text": text}
 
 
+@lru_cache(maxsize=None)
+def _level_step(field):
+    """The isovalue slider's step for `field`: one per field, whatever its resolution."""
+    values = example_data(field, MAX_SIZE).values
+    return nice_step(values.max() - values.min())
+
+
 def _draw_case_table(ax):
     """The 16 cases as small tiles (4 x 4): corners, the table's segments and the number.
 
@@ -294,6 +301,10 @@ class IsolineExplorer(Explorer):
         self.field = labelled(w.Dropdown, "field", options=FIELDS, value=self.state.field)
         self.size = slider("samples", self.state.size, 4, MAX_SIZE, 1, kind=w.IntSlider)
         align([self.level, self.field, self.size])
+        self._level_range()
+        if self.level.value != self.state.level:        # put on the slider's grid
+            self.state.level = self.level.value
+            s = scene(self.state)
         self.cases_box = checkbox("case numbers", self.state.show_cases)
         bind(self.state, {"level": self.level}, self.update)
         for control in (self.field, self.size, self.cases_box):
@@ -301,17 +312,14 @@ class IsolineExplorer(Explorer):
         self.info = panel(width="330px")
         controls = w.VBox([self.level, self.field, self.size, self.cases_box, self.info])
         self.widget = beside(self.fig.canvas, controls)
-        self._level_range()
         self._static(s)
         self._draw(s)
 
     def _level_range(self):
+        # the step belongs to the field, not to its resolution: the isovalue stays on the
+        # slider's grid when the resolution changes (the browser would snap it and send it back)
         values = example_data(self.state.field, int(self.state.size)).values
-        lo, hi = float(values.min()), float(values.max())
-        with self.level.hold_sync():        # one message: the browser never clips to a stale range
-            self.level.min, self.level.max = -1e9, 1e9      # widen first: min <= max always
-            self.level.min, self.level.max = lo, hi
-            self.level.step = (hi - lo) / 400
+        set_range(self.level, values.min(), values.max(), _level_step(self.state.field))
 
     def _static(self, s):
         """The field image and the grid lines (redrawn only when the field changes)."""
@@ -585,6 +593,9 @@ class IsosurfaceExplorer(PlotterExplorer):
         self.elevation = slider("view elevation °", self.state.elevation, -80, 80, 5)
         align([self.volume, self.level, self.azimuth, self.elevation])
         self._level_range()
+        if self.level.value != self.state.level:        # put on the slider's grid
+            self.state.level = self.level.value
+            s = scene_3d(self.state)
         self.volume.observe(self._on_volume, names="value")
         self._on_change = bind(self.state, {"level": self.level, "table": self.table,
                                             "azimuth": self.azimuth,
@@ -595,18 +606,15 @@ class IsosurfaceExplorer(PlotterExplorer):
                              align="flex-start")
         self._draw(s)
 
-    def _level_range(self):
+    def _level_range(self, value=None):
         values = example_volume(self.state.volume).values
         inner = values[values > -2.0] if self.state.volume == "noise" else values
-        self.level.min, self.level.max = -1e9, 1e9
-        self.level.min, self.level.max = float(inner.min()), float(inner.max())
-        self.level.step = (self.level.max - self.level.min) / 200
+        lo, hi = inner.min(), inner.max()
+        set_range(self.level, lo, hi, nice_step(hi - lo, 200), value)
 
     def _on_volume(self, change):
         self.state.volume = change["new"]
-        with self.level.hold_sync():        # the new range and value reach the browser together
-            self._level_range()
-            self.level.value = float(example_volume(self.state.volume).level)
+        self._level_range(float(example_volume(self.state.volume).level))
         self._on_change(None)
 
     def update(self):
