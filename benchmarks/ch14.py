@@ -1,4 +1,6 @@
-"""Chapter 14: texture sampling against scipy.ndimage.map_coordinates."""
+"""Chapter 14: texture sampling against scipy.ndimage.map_coordinates, and the topic files of
+the chapter: two-part mapping and texture transforms (ch14_two_part), environment maps
+(ch14_environment), relief mapping (ch14_relief) and texture hierarchies (ch14_hierarchies)."""
 import numpy as np
 
 from benchmarks import operation_row
@@ -37,7 +39,13 @@ def operations(quick=False):
                       lambda: texturing.nearest_sample(grey, u, v, "repeat"),
                       lambda: ndimage.map_coordinates(grey, c_grey, order=0, mode="grid-wrap"),
                       sci + " (order=0)", repeat),
-    ]
+    ] + [row for topic in _topics() for row in topic.operations(quick)]
+
+
+def _topics():
+    from benchmarks import ch14_environment, ch14_hierarchies, ch14_relief, ch14_two_part
+
+    return (ch14_two_part, ch14_environment, ch14_relief, ch14_hierarchies)
 
 
 def widgets(quick=False):
@@ -73,4 +81,6 @@ def widgets(quick=False):
                            lambda: explorer.png(), repeat))
     explorer.plotter.close()
     plt.close(explorer.fig)
+    for topic in _topics():
+        rows += topic.widgets(quick)
     return rows

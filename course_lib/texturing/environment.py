@@ -65,7 +65,7 @@ _TC = np.array([[-1, 1], [-1, 1], [1, 2], [-1, 2], [-1, 1], [-1, 1]])
 # Input checks
 # ---------------------------------------------------------------------------------------------
 
-def _directions(value, name):
+def _nonzero_directions(value, name):
     d = as_points(value, name, dims=3)
     n2 = _dot(d, d)
     if np.any(n2 == 0):
@@ -73,7 +73,7 @@ def _directions(value, name):
     return d
 
 
-def _faces(cube, name="cube"):
+def _cube_array(cube, name="cube"):
     c = as_array(cube, name)
     if c.ndim not in (3, 4) or c.shape[0] != 6:
         raise ValueError(f"{name} must have 6 faces (+X, -X, +Y, -Y, +Z, -Z) in an array "
@@ -140,7 +140,7 @@ def cube_face_coordinates(directions):
     >>> face, s, t
     (array([0, 5]), array([0.5, 0.5]), array([0.25, 0.5 ]))
     """
-    d = _directions(directions, "directions")
+    d = _nonzero_directions(directions, "directions")
     a = np.abs(d)
     axis = np.where((a[..., 0] >= a[..., 1]) & (a[..., 0] >= a[..., 2]), 0,
                     np.where(a[..., 1] >= a[..., 2], 1, 2))
@@ -259,7 +259,7 @@ def sample_cube_map(cube, directions, filter="bilinear"):
     >>> sample_cube_map(cube, [[1, 0, 0], [0, -1, 0], [0.1, 0.2, -1]])
     array([0., 3., 5.])
     """
-    c = _faces(cube)
+    c = _cube_array(cube)
     filter = as_choice(filter, "filter", ("bilinear", "nearest"))
     face, s, t = cube_face_coordinates(directions)
     n = c.shape[1]
@@ -331,7 +331,7 @@ def cube_cross(cube, cell=None, background=1.0):
            [ 1.,  5.,  0.,  4.],
            [-1.,  2., -1., -1.]])
     """
-    c = _faces(cube)
+    c = _cube_array(cube)
     n = c.shape[1] if cell is None else as_whole(cell, "cell", 1)
     g = 2 * _texel_centres(n) - 1
     b, a = np.meshgrid(g, g, indexing="ij")
@@ -355,7 +355,7 @@ def cross_position(directions):
            [2.5, 1.5],
            [1.5, 2.5]])
     """
-    d = _directions(directions, "directions")
+    d = _nonzero_directions(directions, "directions")
     face = cube_face_coordinates(d)[0]
     out = np.zeros(d.shape[:-1] + (2,))
     for f, ((col, row), _) in _CROSS.items():
@@ -401,7 +401,7 @@ def sphere_map_coordinates(reflection):
     >>> s.round(4), t.round(4)
     (array([0.5   , 0.8536, 1.    ]), array([0.5, 0.5, 0.5]))
     """
-    r = _directions(reflection, "reflection")
+    r = _nonzero_directions(reflection, "reflection")
     r = r / np.sqrt(_dot(r, r))[..., None]
     m = 2 * np.sqrt(r[..., 0] ** 2 + r[..., 1] ** 2 + (r[..., 2] + 1) ** 2)
     singular = m < 1e-12
@@ -519,7 +519,7 @@ def sample_sphere_map(sphere_map, reflection, view=None):
     array([[0.5 , 0.5 , 0.95]])
     """
     m = _image(sphere_map, "sphere_map")
-    r = _directions(reflection, "reflection")
+    r = _nonzero_directions(reflection, "reflection")
     if view is not None:
         r = r @ _rotation(view)
     s, t = sphere_map_coordinates(r)
@@ -542,7 +542,7 @@ def latlong_coordinates(directions):
     >>> latlong_coordinates([[0, 0, 1], [0, 1, 0]])
     (array([0.5, 0.5]), array([0.5, 1. ]))
     """
-    return spherical_map(_directions(directions, "directions"))
+    return spherical_map(_nonzero_directions(directions, "directions"))
 
 
 def latlong_direction(u, v):
@@ -605,7 +605,7 @@ def reflect_view(incident, normals):
     >>> reflect_view([0, 0, -1], [0, 1, 1]).round(12) + 0.0   # a 45-degree mirror: up
     array([0., 1., 0.])
     """
-    i = _directions(incident, "incident")
+    i = _nonzero_directions(incident, "incident")
     return _phong_reflect(-i, normals)
 
 
@@ -700,7 +700,7 @@ def distant_environment_error(offset, direction, radius):
     30.0
     """
     p = as_points(offset, "offset", dims=3)
-    r = _directions(direction, "direction")
+    r = _nonzero_directions(direction, "direction")
     big_r = as_positive(radius, "radius")
     if np.any(_dot(p, p) >= big_r * big_r):
         raise ValueError("offset must lie inside the environment (|offset| < radius)")

@@ -37,7 +37,7 @@ import numpy as np
 
 from .._validate import as_array, as_choice, as_points, as_positive, as_whole
 from ._common import WRAP_MODES, _dot, _wrap
-from .sampling import bilinear_sample
+from .sampling import bilinear_sample, uv_grid
 
 __all__ = ["bricks_height", "bump_normal", "bump_normal_tangent", "bumps_height",
     "decode_normals", "displace", "encode_normals", "height_gradient", "height_gradient_at",
@@ -617,9 +617,10 @@ def shade_normals(normals, light=(0.4, 0.5, 0.75), view=(0.0, 0.0, 1.0), model="
 # Height maps for demos
 # ---------------------------------------------------------------------------------------------
 
-def _centres(size):
+def _texel_centres_uv(size):
     rows, cols = _size(size)
-    return np.meshgrid((np.arange(cols) + 0.5) / cols, (np.arange(rows) + 0.5) / rows)
+    grid = uv_grid(cols, rows)
+    return grid[..., 0], grid[..., 1]
 
 
 def bumps_height(size=128, count=4):
@@ -635,7 +636,7 @@ def bumps_height(size=128, count=4):
            [0.021, 0.125, 0.125, 0.021]])
     """
     k = as_positive(count, "count")
-    u, v = _centres(size)
+    u, v = _texel_centres_uv(size)
     return 0.25 * (1 - np.cos(2 * np.pi * k * u)) * (1 - np.cos(2 * np.pi * k * v))
 
 
@@ -651,7 +652,7 @@ def bricks_height(size=128, rows=8, columns=4, mortar=0.08):
     """
     nr, nc = as_whole(rows, "rows", 1), as_whole(columns, "columns", 1)
     m = as_positive(mortar, "mortar")
-    u, v = _centres(size)
+    u, v = _texel_centres_uv(size)
     y = v * nr
     row = np.floor(y)
     x = u * nc + 0.5 * (row % 2)
@@ -677,7 +678,7 @@ def noise_height(size=128, frequency=6.0, octaves=3, seed=0):
     from .procedural import turbulence
 
     f = as_positive(frequency, "frequency")
-    u, v = _centres(size)
+    u, v = _texel_centres_uv(size)
     r = f / (2 * np.pi)
     p = np.stack([r * np.cos(2 * np.pi * u), r * np.sin(2 * np.pi * u), f * v], axis=-1)
     t = turbulence(p, octaves=octaves, seed=seed)

@@ -36,7 +36,14 @@ _FONT = {  # 3x5 digits, rows top to bottom
 
 @dataclass
 class State:
-    """Everything the picture depends on."""
+    """Everything the picture depends on: the object, the intermediate surface (S-mapping),
+    the O-mapping, and the texture matrix's tiling, offset and rotation (degrees).
+
+    Examples
+    --------
+    >>> State().object, State().surface, State().method, State().tiling
+    ('torus', 'cylinder', 'normal', 1.0)
+    """
     object: str = "torus"
     surface: str = "cylinder"
     method: str = "normal"
@@ -148,7 +155,17 @@ def _notes(state):
 
 def scene(state):
     """Pure part: state -> the rendered object (SIZE, SIZE, 3), the transformed texture
-    (64, 64, 3), the texture matrix and the text."""
+    (64, 64, 3), the texture matrix, the object's (u, v), the number of missed pixels and the
+    text.
+
+    Examples
+    --------
+    >>> s = scene(State(object="sphere", surface="sphere", tiling=2))
+    >>> s["image"].shape, s["texture"].shape, s["misses"]
+    ((128, 128, 3), (64, 64, 3), 0)
+    >>> s["matrix"].tolist()
+    [[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 1.0]]
+    """
     p, n, mask, shade = geometry(state.object)
     m = texture_matrix(tiling=state.tiling, offset=(state.offset_u, state.offset_v),
                        rotation=np.radians(state.rotation_deg))

@@ -154,8 +154,8 @@ class ClipmapMemory(_Parts):
               r"per MiB. The full pyramid is about $\tfrac43$ of level 0.")
 
     def draw(self, rng):
-        self.size = int(pick(rng, (4096, 8192, 16384, 32768, 65536)))
-        self.clip = int(pick(rng, (256, 512, 1024)))
+        self.size = int(pick(rng, (2048, 4096, 8192, 16384, 32768, 65536, 131072)))
+        self.clip = int(pick(rng, (128, 256, 512, 1024)))
         layout = texturing.clipmap((self.size, self.size), self.clip)
         self._layout = layout
         self.expected = [int(layout.clipped.sum()), 4 * layout.resident_texels / _MIB,

@@ -205,14 +205,16 @@ class TangentFrame(_Chapter14):
     def worked(self):
         e1, e2, du1, dv1, du2, dv2, d = self._parts()
         if self.which == "T":
+            answer = (dv2 * e1 - dv1 * e2) / d
             step = (rf"$T = (\Delta v_2 E_1 - \Delta v_1 E_2)/d = ({_num(dv2)}\,{_vec(e1)} - "
-                    rf"{_num(dv1)}\,{_vec(e2)})/{_n4(d)} = {_vec(self.expected)}$.")
+                    rf"{_num(dv1)}\,{_vec(e2)})/{_n4(d)} = {_vec(answer)}$.")
         else:
+            answer = (du1 * e2 - du2 * e1) / d
             step = (rf"$B = (\Delta u_1 E_2 - \Delta u_2 E_1)/d = ({_num(du1)}\,{_vec(e2)} - "
-                    rf"{_num(du2)}\,{_vec(e1)})/{_n4(d)} = {_vec(self.expected)}$.")
+                    rf"{_num(du2)}\,{_vec(e1)})/{_n4(d)} = {_vec(answer)}$.")
         return Worked([rf"$E_1 = {_vec(e1)}$, $E_2 = {_vec(e2)}$.",
                        rf"$d = {_num(du1)} \cdot {_num(dv2)} - {_num(du2)} \cdot {_num(dv1)} = "
-                       rf"{_n4(d)}$.", step], self.expected)
+                       rf"{_n4(d)}$.", step], answer)
 
 
 class DecodeNormalTexel(_Chapter14):
@@ -280,9 +282,11 @@ class DecodeNormalTexel(_Chapter14):
 
     def worked(self):
         raw = 2 * self.texel / 255.0 - 1
+        nt = raw / np.linalg.norm(raw)
+        answer = nt[0] * self.T + nt[1] * self.B + nt[2] * self.N
         return Worked([
             rf"$2c/255 - 1 = {_vec(np.round(raw, 4))}$; renormalised "
-            rf"$n_t = {_vec(np.round(self._nt, 4))}$.",
-            rf"$n = {_n4(self._nt[0])}\,T + {_n4(self._nt[1])}\,B + {_n4(self._nt[2])}\,N = "
-            rf"{_vec(np.round(self.expected, 4))}$.",
-        ], self.expected)
+            rf"$n_t = {_vec(np.round(nt, 4))}$.",
+            rf"$n = {_n4(nt[0])}\,T + {_n4(nt[1])}\,B + {_n4(nt[2])}\,N = "
+            rf"{_vec(np.round(answer, 4))}$.",
+        ], answer)
