@@ -10,7 +10,10 @@ course_lib.texturing, which the checkers call): bilinear samples with
 triangle and finding the point of the triangle under the pixel, OpenGL's wrap rules, and the
 mapping, mipmap and checkerboard formulas typed out below.
 """
+import importlib
 import math
+import types
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -291,7 +294,13 @@ GARBAGE = {"number": NUMBER_GARBAGE, "uv": UV_GARBAGE, "vector3": VECTOR3_GARBAG
            "three": THREE_GARBAGE, "four": FOUR_GARBAGE, "six": SIX_GARBAGE}
 
 
-exercises = harness.variants(ch14)
+#: The chapter's exercises are split over topic files: this one tests those in SPECS
+#: (tests/test_exercises_ch14_*.py the others), and test_every_exercise_is_tested_in_one_file
+#: holds the union to the chapter's list.
+TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch14.EXERCISES
+                                              if cls.__name__ in SPECS),
+                              **{name: getattr(ch14, name) for name in SPECS})
+exercises = harness.variants(TOPIC)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -299,7 +308,7 @@ exercises = harness.variants(ch14)
 # ---------------------------------------------------------------------------------------------
 
 globals().update(harness.common_tests(
-    ch14, SPECS, GARBAGE, exercises, at_least=8, distinct=(30, 10),
+    TOPIC, SPECS, GARBAGE, exercises, at_least=8, distinct=(30, 10),
     newlines=r"\\neq?\b|\\normal"))
 test_mistakes_are_diagnosed = harness.mistakes_test(
     SPECS, exercises, lambda a, b, form: gap(a, b) < SAME,
@@ -307,6 +316,18 @@ test_mistakes_are_diagnosed = harness.mistakes_test(
 
 
 test_right_answer_is_accepted = harness.right_answer_test(SPECS, exercises)
+
+
+def test_every_exercise_is_tested_in_one_file():
+    """Together the chapter's exercise test files test every exercise of ``ch14.EXERCISES``,
+    each in exactly one file."""
+    files = sorted(Path(__file__).parent.glob("test_exercises_ch14_*.py"))
+    assert files
+    tested = list(SPECS)
+    for path in files:
+        tested += list(importlib.import_module(path.stem).SPECS)
+    assert sorted(tested) == sorted(cls.__name__ for cls in ch14.EXERCISES)
+    assert len(ch14.EXERCISES) >= 19
 
 
 def test_wrong_answers_get_teaching_feedback():
