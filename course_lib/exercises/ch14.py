@@ -37,6 +37,7 @@ from ._ch14.mipmaps import Checkerboard, MipLevel
 from ._ch14.hierarchies import ClipmapMemory, PyramidMemory
 from ._ch14.relief import DecodeNormalTexel, PerturbedNormal, TangentFrame
 from ._ch14.two_part import TextureTransform, TwoPartMapping
+from ._ch14.environment import CubeMapFace, EnvironmentReflection, SphereMapCoordinates
 
 __all__ = [
     "EXERCISES",
@@ -57,6 +58,8 @@ __all__ = [
     "DecodeNormalTexel", "PerturbedNormal", "TangentFrame",
     "TextureTransform",
     "TwoPartMapping",
+    # environment mapping
+    "CubeMapFace", "SphereMapCoordinates", "EnvironmentReflection",
 ]
 
 #: The exercises of chapter 14, in the order of the solutions notebook.
@@ -80,4 +83,8 @@ EXERCISES = (
     DecodeNormalTexel,
     TextureTransform,
     TwoPartMapping,
+    # environment mapping
+    CubeMapFace,
+    SphereMapCoordinates,
+    EnvironmentReflection,
 )
