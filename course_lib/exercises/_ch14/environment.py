@@ -32,6 +32,9 @@ _AXES = "xyz"
 BOUNDARY_SHARE = 0.15
 #: The boundary case of :class:`CubeMapFace`, as its ``boundary`` attribute names it.
 TIE = "tie between two axes"
+#: How far the largest component of a reflection vector must lead the next (a clear face); off
+#: the simple fractions the components take, so that no rounding decides a variant.
+_MARGIN = 0.0987
 
 
 # ---------------------------------------------------------------------------------------------
@@ -274,8 +277,8 @@ class CubeMapFace(_Chapter14):
         found = [
             Mistake([face, 1 - s, t], rf"The sign of $s_c$ is wrong: face {name}'s row of the "
                     rf"table gives $s_c = {_row_latex(face, 0)} = {_num(sc)}$. Each face has "
-                    r"its own signs (chosen so that every face is seen the same way round "
-                    r"from inside the cube); take both from the face's own row.", "sc sign"),
+                    r"its own signs, fixed by how the specification orients that face's "
+                    r"image; take both from the face's own row.", "sc sign"),
             Mistake([face, s, 1 - t], rf"The sign of $t_c$ is wrong: face {name}'s row of the "
                     rf"table gives $t_c = {_row_latex(face, 1)} = {_num(tc)}$. Each face has "
                     r"its own signs; take both from the face's own row.", "tc sign"),
@@ -499,12 +502,14 @@ class SphereMapCoordinates(_Chapter14):
         if not np.any(self._r):
             return False
         r = self._unit_r()
-        if r[2] < -0.9 or abs(r[0] - r[1]) < 0.1:           # far from the singular point
+        # far from the singular point r = (0, 0, -1), and s apart from t (thresholds off the
+        # simple fractions the numbers take, so that no last bit decides a variant)
+        if r[2] < -0.9013 or abs(r[0] - r[1]) < 0.0987:
             return False
         if self.kind == "reflection":
             return float(self.R @ self.R) > 1 and np.count_nonzero(self.R) >= 2
         n_dot_i = float(self.N @ self.I)
-        return n_dot_i < -0.1 and r[2] < 0.9 and not np.allclose(np.abs(self.N), [0, 0, 1])
+        return n_dot_i < -0.1013 and r[2] < 0.9013 and not np.allclose(np.abs(self.N), [0, 0, 1])
 
     def mistakes(self):
         r = self._unit_r()
@@ -644,13 +649,13 @@ class EnvironmentReflection(_Chapter14):
         if self.expected is None:
             return False
         n_dot_i = float(_unit(self.N) @ self.I)
-        if n_dot_i > -0.15:                                  # no grazing rays
+        if n_dot_i > -0.1487:             # no grazing rays (thresholds off simple fractions)
             return False
         for r, _, _ in self._vectors().values():
-            if not _unique_largest(np.abs(r), 0.1):
+            if not _unique_largest(np.abs(r), _MARGIN):
                 return False
         r = self.expected[:3]
-        return _unique_largest(np.abs(r), 0.1) and _unique_largest(r, 0.1)
+        return _unique_largest(np.abs(r), _MARGIN) and _unique_largest(r, _MARGIN)
 
     def _vectors(self):
         """Reflection vectors of the slips: key -> (vector, explanation, key)."""
