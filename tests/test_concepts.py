@@ -864,3 +864,73 @@ def test_fact_ch14_two_part():
     moved = texture_transforms.transform_texture(tex, texture_transforms.texture_matrix(
         offset=(0.25, 0)), filter="nearest")
     assert moved[0, 0] == 1.0                         # now at u = 0..0.125: moved by -0.25
+
+
+def test_fact_ch14_environment():
+    from course_lib.texturing import environment as env
+    # the distant-environment assumption: off the centre by d, walls at R, the look-up misses by
+    # up to arcsin(d / R) (rays perpendicular to the offset), by nothing along the offset
+    assert "arcsin" in answer_text("ch14-env-distant")
+    d, R = 2.0, 3.0
+    offset = np.array([0.0, d, 0.0])
+    perpendicular = env.distant_environment_error(offset, [[1, 0, 0], [0, 0, -1]], R)
+    assert np.allclose(perpendicular, math.asin(d / R))                    # 41.8 degrees
+    assert np.allclose(env.distant_environment_error(offset, [[0, 1, 0], [0, -1, 0]], R), 0,
+                       atol=1e-7)
+    dirs = RNG.normal(size=(500, 3))
+    errors = env.distant_environment_error(offset, dirs, R)
+    assert errors.max() <= math.asin(d / R) + 1e-12
+    for u, err in zip(dirs[:40] / np.linalg.norm(dirs[:40], axis=1, keepdims=True), errors):
+        pu = offset @ u                                 # the wall point the ray really hits
+        q = offset + (-pu + math.sqrt(pu * pu - offset @ offset + R * R)) * u
+        assert math.isclose(err, math.acos(np.clip(q @ u / np.linalg.norm(q), -1, 1)),
+                            abs_tol=1e-9)
+    assert env.distant_environment_error(offset, [1, 0, 0], 100.0) < math.asin(0.021)
+    # no self-reflection: the ray reflected from the body towards the spout hits the spout,
+    # but the look-up only gets the direction and returns the room
+    assert not truth("ch14-env-self-reflection")
+    p, incident = np.array([0.8, 0.0, 0.6]), np.array([0.0, 0.0, -1.0])   # n = p on a unit ball
+    r = env.reflect_view(incident, p)
+    assert np.allclose(r, incident - 2 * (p @ incident) * p) and np.allclose(r, [0.96, 0, -0.28])
+    spout, radius = p + 1.0 * r, 0.2
+    b, c = r @ (p - spout), (p - spout) @ (p - spout) - radius ** 2
+    assert b * b - c > 0 and -b - math.sqrt(b * b - c) > 0                 # the ray hits it
+    cube = env.cube_map_from_function(env.room_environment, 16)
+    room = {tuple(np.round(c, 6)) for c in env.room_environment(RNG.normal(size=(4000, 3)))}
+    seen = env.sample_cube_map(cube, [r], "nearest")[0]
+    assert tuple(np.round(seen, 6)) in room                                # a wall, not a spout
+    # the sphere map: (0, 0, 1) at the centre; along (sin a, 0, -cos a) closed form
+    # s = (1 + cos(a/2)) / 2, so the directions near (0, 0, -1) go round the whole rim
+    assert "(0, 0, -1)" in answer_text("ch14-env-sphere-map")
+    s, t = env.sphere_map_coordinates([[0, 0, 1]])
+    assert np.allclose([s[0], t[0]], 0.5)
+    a = np.radians([10.0, 60.0, 120.0, 170.0, 179.0])
+    s, _ = env.sphere_map_coordinates(np.stack([np.sin(a), 0 * a, -np.cos(a)], -1))
+    assert np.allclose(s, (1 + np.cos(a / 2)) / 2)
+    phi = np.linspace(0, 2 * np.pi, 24, endpoint=False)
+    eps = np.radians(1.0)
+    cap = np.stack([np.sin(eps) * np.cos(phi), np.sin(eps) * np.sin(phi),
+                    -np.cos(eps) * np.ones_like(phi)], -1)
+    s, t = env.sphere_map_coordinates(cap)
+    assert np.all(np.hypot(s - 0.5, t - 0.5) > 0.499)                      # on the rim ...
+    assert np.allclose(np.arctan2(t - 0.5, s - 0.5) % (2 * np.pi), phi)    # ... all round it
+    # view dependence: the map made for another view holds other colours
+    turn = np.array([[0.0, 0, 1], [0, 1, 0], [-1, 0, 0]])                  # 90 degrees about y
+    front = env.sphere_map_from_function(env.axes_environment, 32)
+    side = env.sphere_map_from_function(env.axes_environment, 32, view=turn)
+    assert np.abs(front - side).max() > 0.3
+    # a cube map's texels: the corner texel covers 1/(3 sqrt 3) of the centre texel's solid
+    # angle (exact solid angles of rectangles on the plane z = 1), the face 4 pi / 6
+    assert "viewer" in answer_text("ch14-env-cube-vs-sphere")
+
+    def corner_angle(x, y):                # the solid angle of [0, x] x [0, y] on z = 1
+        return math.atan(x * y / math.sqrt(1 + x * x + y * y))
+
+    def texel(x0, x1, y0, y1):
+        return (corner_angle(x1, y1) - corner_angle(x0, y1) - corner_angle(x1, y0)
+                + corner_angle(x0, y0))
+
+    h = 1 / 256
+    ratio = texel(1 - h, 1, 1 - h, 1) / texel(0, h, 0, h)
+    assert math.isclose(ratio, 1 / (3 * math.sqrt(3)), rel_tol=0.01)
+    assert math.isclose(4 * corner_angle(1, 1), 4 * math.pi / 6)

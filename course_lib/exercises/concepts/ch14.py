@@ -198,4 +198,74 @@ QUESTIONS = [
         "the feature at u = 0.25 appears where u = 0 was; the picture moves by -0.25. To move "
         "it by +0.25 use the inverse matrix T(-0.25, 0).",
         "Right: the picture moves the opposite way, by -0.25 (the inverse of the matrix)."),
+    # environment mapping
+    _mc(14, "ch14-env-distant",
+        "An environment map is rendered from the centre of a room whose walls are about 3 m "
+        "away. A mirror ball is placed 2 m from that centre, near one wall, and looks its "
+        "reflections up in the map. What goes wrong?",
+        ("Nothing: the map stores directions, and a direction is the same everywhere",
+         "The look-up uses only the direction, but what a direction shows depends on where "
+         "you stand: the map holds the view from its centre. That is exact only for "
+         "surroundings infinitely far away."),
+        ("It reflects the wrong parts of the room: a reflected ray leaving the ball hits "
+         "another point of the wall than the ray with the same direction from the map's "
+         "centre, here up to $\\arcsin(2/3) \\approx 42°$ off",
+         "Right: the map assumes a distant environment. For an offset $d$ and walls at "
+         "distance $R$ the look-up misses by up to $\\arcsin(d/R)$ (rays perpendicular to "
+         "the offset), and not at all along it; it is fine for a small object at the centre "
+         "or a far environment (a sky)."),
+        ("Its reflections turn blurry, because the map's resolution falls with the distance "
+         "from the centre", "The map's resolution does not depend on where the object "
+         "stands; the error is a shift of what is reflected, not a blur."),
+        ("It starts to reflect itself", "The map is rendered without the object (or the "
+         "object would hide the room); a direction-only look-up can never show the object, "
+         "wherever it stands."),
+        correct=1),
+    _tf(14, "ch14-env-self-reflection",
+        "With environment mapping, a teapot's spout can be seen reflected in the teapot's "
+        "own body.", False,
+        "It cannot: the map holds only the surroundings seen from one point, rendered "
+        "without the teapot, and the look-up asks for a direction, never a position. The "
+        "reflected ray from the body that would hit the spout gets the room behind the spout. "
+        "Self-reflections (and reflections of nearby objects) need ray tracing, or a map "
+        "rendered for each reflector without itself.",
+        "Right: a direction-only look-up in a map of the surroundings cannot find the object "
+        "itself; the reflected ray from the body towards the spout shows the room behind it."),
+    _mc(14, "ch14-env-sphere-map",
+        "A sphere map was made for a viewer looking along $-z$. What are its two weak "
+        "points?",
+        ("None: a single disc holds every direction, so it suits every view",
+         "It holds every direction, but indexed in eye space for one viewing direction: "
+         "when the camera turns, the map must be remade (or the reflections come from the "
+         "wrong side of the world)."),
+        ("It is correct for one viewing direction only, and the direction straight behind "
+         "the ball, $r = (0, 0, -1)$, is smeared over the whole rim of the disc",
+         "Right: $m = 2\\sqrt{r_x^2 + r_y^2 + (r_z + 1)^2}$ is 0 there; the directions "
+         "close to it are spread around the whole rim, so they are badly sampled and "
+         "neighbouring directions land on opposite sides of the disc."),
+        ("Its singular direction is $r = (0, 0, 1)$, straight back at the viewer, at the "
+         "centre of the disc", "That direction maps to $(s, t) = (\\tfrac12, "
+         "\\tfrac12)$, the best-sampled point of the disc; the singular one is "
+         "$(0, 0, -1)$, behind the ball."),
+        ("It has a seam along a meridian, like a latitude-longitude map",
+         "It has no seam; its one bad place is the rim, where the direction behind the ball "
+         "is spread out."),
+        correct=1),
+    _mc(14, "ch14-env-cube-vs-sphere",
+        "Why do renderers prefer cube maps to sphere maps for reflections?",
+        ("A cube map needs a single texture look-up with one pair of coordinates",
+         "It needs the choice of a face first (the major axis), then $(s, t)$ on it; "
+         "graphics hardware does both, but it is six images, not one."),
+        ("A cube map has no seams", "It has twelve edges where faces meet; classic "
+         "filtering stays within one face and can show them (hence seamless cube-map "
+         "filtering)."),
+        ("A cube map can be made from one photograph of a mirror ball",
+         "That photograph is a sphere map; a cube map takes six 90° views (or resampling)."),
+        ("A cube map does not depend on the viewer and has no singular direction, so one "
+         "map serves every viewpoint; the price is six faces and seams along the edges",
+         "Right: it is indexed by world-space directions and distorts little (a texel at a "
+         "face's corner covers $1/(3\\sqrt3)$ of the solid angle of one at its centre); "
+         "a sphere map must be remade when the view turns and smears the direction behind "
+         "the ball over its rim."),
+        correct=3),
 ]
