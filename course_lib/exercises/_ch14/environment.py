@@ -90,12 +90,14 @@ def _unique_largest(values, margin=0.0):
     return v[0] - v[1] > margin
 
 
-_NAMES = {}
-for _k, _name in enumerate(FACES):
-    _sign, _axis = _name[0], _name[1]
-    for _form in (_name, _axis + _sign, ("POS" if _sign == "+" else "NEG") + _axis,
-                  ("POSITIVE" if _sign == "+" else "NEGATIVE") + _axis):
-        _NAMES[_form] = _k
+def _spellings(name):
+    """``"+X"``, ``"X+"``, ``"POSX"``, ``"POSITIVEX"``: the forms a face name is read in."""
+    sign, axis = name[0], name[1]
+    return (name, axis + sign, ("POS" if sign == "+" else "NEG") + axis,
+            ("POSITIVE" if sign == "+" else "NEGATIVE") + axis)
+
+
+_NAMES = {form: k for k, name in enumerate(FACES) for form in _spellings(name)}
 
 
 def face_from_name(text):
