@@ -1,11 +1,15 @@
-r"""Chapter 14 exercises: texture sampling, barycentric coordinates, mappings, mipmaps, exam style.
+r"""Chapter 14 exercises: sampling, barycentric coordinates, mappings, environment maps, mipmaps,
+texture matrices, relief and texture hierarchies, exam style.
 
 Each class is one kind of exam question: the nearest texel and a bilinear sample of a small
 texture; the texel a repeating, clamping or mirroring texture uses for a coordinate outside
 [0, 1]; the barycentric coordinates of a point, inside or outside its triangle, and a colour
 interpolated with them; perspective-correct interpolation of texture coordinates; the
-spherical, cylindrical and planar texture coordinates of a point; the texel footprint, the
-mipmap level and the size of a level; and a checkerboard. The ``seed`` draws numbers that work
+spherical, cylindrical and planar texture coordinates of a point; two-part mapping onto a
+cylinder; the cube-map face and (s, t) of a direction, sphere-map coordinates and a reflection
+vector's face; the texel footprint, the mipmap level and the size of a level; a checkerboard; a
+texture matrix; a bump-mapped normal, a triangle's tangent frame and a decoded normal-map texel;
+and the memory of a mip pyramid and of a clipmap. The ``seed`` draws numbers that work
 out by hand: 4 x 4 textures of whole numbers, coordinates that are multiples of 0.05,
 triangles with whole-number corners, points at whole-number distances from a centre. Answers
 that are whole numbers (texel columns, the sides of a mipmap level, checker values) are compared
@@ -33,58 +37,59 @@ the topics share is in its ``__init__``); import them from here.
 from ._ch14.sampling import BilinearSample, NearestSample, WrapModes
 from ._ch14.barycentric import BarycentricCoordinates, InterpolateColour, PerspectiveCorrect
 from ._ch14.mappings import CylindricalMap, PlanarMap, SphericalMap
-from ._ch14.mipmaps import Checkerboard, MipLevel
-from ._ch14.hierarchies import ClipmapMemory, PyramidMemory
-from ._ch14.relief import DecodeNormalTexel, PerturbedNormal, TangentFrame
 from ._ch14.two_part import TextureTransform, TwoPartMapping
 from ._ch14.environment import CubeMapFace, EnvironmentReflection, SphereMapCoordinates
+from ._ch14.mipmaps import Checkerboard, MipLevel
+from ._ch14.relief import DecodeNormalTexel, PerturbedNormal, TangentFrame
+from ._ch14.hierarchies import ClipmapMemory, PyramidMemory
 
 __all__ = [
     "EXERCISES",
     "BarycentricCoordinates",
     "BilinearSample",
     "Checkerboard",
+    "ClipmapMemory",
+    "CubeMapFace",
     "CylindricalMap",
+    "DecodeNormalTexel",
+    "EnvironmentReflection",
     "InterpolateColour",
     "MipLevel",
     "NearestSample",
     "PerspectiveCorrect",
+    "PerturbedNormal",
     "PlanarMap",
-    "SphericalMap",
-    "WrapModes",
     "PyramidMemory",
-    "ClipmapMemory",
-    # relief mapping
-    "DecodeNormalTexel", "PerturbedNormal", "TangentFrame",
+    "SphereMapCoordinates",
+    "SphericalMap",
+    "TangentFrame",
     "TextureTransform",
     "TwoPartMapping",
-    # environment mapping
-    "CubeMapFace", "SphereMapCoordinates", "EnvironmentReflection",
+    "WrapModes",
 ]
 
-#: The exercises of chapter 14, in the order of the solutions notebook.
+#: The exercises of chapter 14, in the order of the lesson's sections and of the solutions
+#: notebook.
 EXERCISES = (
-    NearestSample,
+    NearestSample,                  # 1-2 texture space, sampling
     BilinearSample,
     WrapModes,
-    BarycentricCoordinates,
+    BarycentricCoordinates,         # 3 barycentric coordinates
     InterpolateColour,
     PerspectiveCorrect,
-    SphericalMap,
+    SphericalMap,                   # 4 mappings
     CylindricalMap,
     PlanarMap,
-    MipLevel,
-    Checkerboard,
-    PyramidMemory,
-    ClipmapMemory,
-    # relief mapping
-    PerturbedNormal,
-    TangentFrame,
-    DecodeNormalTexel,
-    TextureTransform,
-    TwoPartMapping,
-    # environment mapping
-    CubeMapFace,
+    TwoPartMapping,                 # 5 two-part mapping
+    CubeMapFace,                    # 6 environment mapping
     SphereMapCoordinates,
     EnvironmentReflection,
+    MipLevel,                       # 7 mipmaps
+    Checkerboard,                   # 8 procedural textures
+    TextureTransform,               # 9 texture transformations
+    PerturbedNormal,                # 10 relief
+    TangentFrame,
+    DecodeNormalTexel,
+    PyramidMemory,                  # 11 texture hierarchies
+    ClipmapMemory,
 )
