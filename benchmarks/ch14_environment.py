@@ -52,7 +52,7 @@ def _reference_sphere(sphere_map, r):
 
 def operations(quick=False):
     """A million (quick: 20,000) random directions looked up in an RGB cube map of 6 x 256 x 256
-    texels (direction -> face, s, t -> bilinear sample: :func:`course_lib.texturing.
+    texels (quick: 6 x 64 x 64; the sphere map 128 x 128) (direction -> face, s, t -> bilinear sample: :func:`course_lib.texturing.
     sample_cube_map`) and in an RGB sphere map of 512 x 512 (:func:`course_lib.texturing.
     sample_sphere_map`). The references do the same work with the formulas written plainly in
     numpy and scipy's ``map_coordinates`` for the bilinear filtering (per face and channel for
@@ -63,8 +63,9 @@ def operations(quick=False):
     repeat = 3 if quick else 7
     rng = np.random.default_rng(14)
     d = rng.normal(size=(n, 3))
-    cube = env.cube_map_from_function(env.sky_environment, 256)
-    sphere = env.sphere_map_from_function(env.sky_environment, 512)
+    face, side = (64, 128) if quick else (256, 512)
+    cube = env.cube_map_from_function(env.sky_environment, face)
+    sphere = env.sphere_map_from_function(env.sky_environment, side)
     ours_cube = env.sample_cube_map(cube, d)
     assert np.allclose(ours_cube, _reference_cube(cube, d))
     same = np.all(env.sample_cube_map(cube, d, "nearest") == _reference_cube(cube, d, 0), axis=1)
@@ -73,15 +74,15 @@ def operations(quick=False):
     assert np.allclose(env.sample_sphere_map(sphere, d_sphere),
                        _reference_sphere(sphere, d_sphere))
     return [
-        operation_row(f"cube-map look-ups, RGB 6x256x256, bilinear ({n:,} directions)", n,
+        operation_row(f"cube-map look-ups, RGB 6x{face}x{face}, bilinear ({n:,} directions)", n,
                       lambda: env.sample_cube_map(cube, d),
                       lambda: _reference_cube(cube, d),
                       "numpy face table + scipy map_coordinates per face and channel", repeat),
-        operation_row(f"cube-map look-ups, RGB 6x256x256, nearest ({n:,} directions)", n,
+        operation_row(f"cube-map look-ups, RGB 6x{face}x{face}, nearest ({n:,} directions)", n,
                       lambda: env.sample_cube_map(cube, d, "nearest"),
                       lambda: _reference_cube(cube, d, 0),
                       "numpy face table + scipy map_coordinates, order 0", repeat),
-        operation_row(f"sphere-map look-ups, RGB 512x512, bilinear ({n:,} directions)", n,
+        operation_row(f"sphere-map look-ups, RGB {side}x{side}, bilinear ({n:,} directions)", n,
                       lambda: env.sample_sphere_map(sphere, d),
                       lambda: _reference_sphere(sphere, d),
                       "numpy (s, t) formula + scipy map_coordinates per channel", repeat),
