@@ -42,7 +42,8 @@ from . import _style
 from ._base import Explorer, align, labelled, panel, slider
 
 __all__ = ["EnvironmentMapExplorer", "EYE", "HALF_FOV", "KINDS", "OFFSET_MAX", "REFLECTIONS",
-           "ROOM", "SHAPES", "SIZE", "State", "camera", "display", "geometry", "maps", "scene"]
+           "ROOM", "SHAPES", "SIZE", "State", "bounces", "camera", "display", "geometry", "maps",
+           "scene"]
 
 SIZE = 128                          # the picture's pixels per side
 KINDS = ("cube", "sphere", "latlong")
