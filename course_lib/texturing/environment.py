@@ -42,6 +42,7 @@ from .._validate import as_array, as_choice, as_points, as_positive, as_vector, 
 from ..shading.vectors import reflect as _phong_reflect
 from ._common import _dot
 from .mappings import inverse_spherical_map, spherical_map
+from .sampling import bilinear_sample
 
 __all__ = ["CUBE_FACES", "ENVIRONMENTS", "cube_face_coordinates", "cube_face_direction",
            "cube_map_from_function", "cube_cross", "cross_position", "sample_cube_map",
@@ -485,20 +486,6 @@ def _rotation(view):
     return m
 
 
-def _bilinear_clamp(tex, x, y):
-    h, w = tex.shape[:2]
-    j0f, i0f = np.floor(x), np.floor(y)
-    a, b = x - j0f, y - i0f
-    j0, i0 = j0f.astype(np.int64), i0f.astype(np.int64)
-    j1, i1 = np.clip(j0 + 1, 0, w - 1), np.clip(i0 + 1, 0, h - 1)
-    j0, i0 = np.clip(j0, 0, w - 1), np.clip(i0, 0, h - 1)
-    if tex.ndim == 3:
-        a, b = a[..., None], b[..., None]
-    top = tex[i0, j0] + a * (tex[i0, j1] - tex[i0, j0])
-    bottom = tex[i1, j0] + a * (tex[i1, j1] - tex[i1, j0])
-    return top + b * (bottom - top)
-
-
 def _image(tex, name):
     m = as_array(tex, name)
     if m.ndim not in (2, 3) or 0 in m.shape[:2]:
@@ -523,8 +510,7 @@ def sample_sphere_map(sphere_map, reflection, view=None):
     if view is not None:
         r = r @ _rotation(view)
     s, t = sphere_map_coordinates(r)
-    n_h, n_w = m.shape[:2]
-    return _bilinear_clamp(m, s * n_w - 0.5, t * n_h - 0.5)
+    return bilinear_sample(m, s, t, "clamp")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -584,9 +570,9 @@ def sample_latlong_map(latlong, directions):
     """
     m = _image(latlong, "latlong")
     u, v = latlong_coordinates(directions)
-    h, w = m.shape[:2]
+    w = m.shape[1]
     padded = np.concatenate([m[:, -1:], m, m[:, :1]], axis=1)    # the seam wraps
-    return _bilinear_clamp(padded, u * w - 0.5 + 1, v * h - 0.5)
+    return bilinear_sample(padded, (u * w + 1) / (w + 2), v, "clamp")   # the poles clamp
 
 
 # ---------------------------------------------------------------------------------------------
