@@ -184,7 +184,7 @@ def scene(state):
              "intermediate_normal": "intermediate surface's normal"}
     text = (f"<b>{state.object}</b>, S-mapping on the <b>{state.surface}</b>, O-mapping by the "
             f"<b>{names[state.method]}</b>; texture matrix M = T(offset) S({state.tiling:g}) "
-            f"R({state.rotation_deg:g}°): the picture turns by {-state.rotation_deg:g}° and "
+            f"R({state.rotation_deg:g}°): the picture turns by {0.0 - state.rotation_deg:g}° and "
             f"shrinks by {state.tiling:g}.<br>" + "<br>".join(_notes(state)))
     return {"image": image, "texture": side, "matrix": m, "u": u, "v": v,
             "misses": int((~hit).sum()), "text": text}
