@@ -42,7 +42,7 @@ from .._validate import as_array, as_choice, as_points, as_positive, as_vector, 
 from ..shading.vectors import reflect as _phong_reflect
 from ._common import _dot
 from .mappings import inverse_spherical_map, spherical_map
-from .sampling import bilinear_sample
+from .sampling import _blend_corners, _texel_corners, bilinear_sample
 
 __all__ = ["CUBE_FACES", "ENVIRONMENTS", "cube_face_coordinates", "cube_face_direction",
            "cube_map_from_function", "cube_cross", "cross_position", "sample_cube_map",
@@ -270,20 +270,8 @@ def sample_cube_map(cube, directions, filter="bilinear"):
         j = np.minimum((s * n).astype(np.int64), n - 1)
         i = np.minimum((t * n).astype(np.int64), n - 1)
         return flat.take(base + i * n + j, axis=0)
-    x, y = s * n - 0.5, t * n - 0.5
-    j0f, i0f = np.floor(x), np.floor(y)
-    a, b = x - j0f, y - i0f
-    j0, i0 = j0f.astype(np.int64), i0f.astype(np.int64)
-    j1, i1 = np.clip(j0 + 1, 0, n - 1), np.clip(i0 + 1, 0, n - 1)
-    j0, i0 = np.clip(j0, 0, n - 1), np.clip(i0, 0, n - 1)
-    r0, r1 = base + i0 * n, base + i1 * n
-    t00, t01 = flat.take(r0 + j0, axis=0), flat.take(r0 + j1, axis=0)
-    t10, t11 = flat.take(r1 + j0, axis=0), flat.take(r1 + j1, axis=0)
-    if c.ndim == 4:
-        a, b = a[..., None], b[..., None]
-    top = t00 + a * (t01 - t00)
-    bottom = t10 + a * (t11 - t10)
-    return top + b * (bottom - top)
+    i0, i1, j0, j1, a, b = _texel_corners(s * n - 0.5, t * n - 0.5, n, n, "clamp")
+    return _blend_corners(flat, base + i0 * n, base + i1 * n, j0, j1, a, b)
 
 
 # The unfolded cross, seen from inside the cube looking at -Z with +Y up: each cell's

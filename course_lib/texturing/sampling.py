@@ -98,18 +98,29 @@ def bilinear_sample(texture, u, v, wrap="repeat"):
     u, v = _uv(u, v)
     wrap = as_choice(wrap, "wrap", WRAP_MODES)
     h, w = t.shape[:2]
-    x = u * w - 0.5
-    y = v * h - 0.5
+    i0, i1, j0, j1, a, b = _texel_corners(u * w - 0.5, v * h - 0.5, h, w, wrap)
+    flat = t.reshape((h * w,) + t.shape[2:])        # one gather per corner, by flat index
+    return _blend_corners(flat, i0 * w, i1 * w, j0, j1, a, b)
+
+
+def _texel_corners(x, y, h, w, wrap):
+    """The rows i0, i1 and columns j0, j1 of the four texel centres around the array
+    coordinates (x, y) (centres at whole numbers), wrapped into an h x w texture, and the
+    fractions a, b of the way from column j0 to j1 and from row i0 to i1."""
     j0f, i0f = np.floor(x), np.floor(y)
     a, b = x - j0f, y - i0f
     j0, i0 = j0f.astype(np.int64), i0f.astype(np.int64)
     j1, i1 = _wrap(j0 + 1, w, wrap), _wrap(i0 + 1, h, wrap)
-    j0, i0 = _wrap(j0, w, wrap), _wrap(i0, h, wrap)
-    flat = t.reshape((h * w,) + t.shape[2:])        # one gather per corner, by flat index
-    row0, row1 = i0 * w, i1 * w
+    return _wrap(i0, h, wrap), i1, _wrap(j0, w, wrap), j1, a, b
+
+
+def _blend_corners(flat, row0, row1, j0, j1, a, b):
+    """Bilinear blend of the texels of `flat` (one texel per row, channels after) at the flat
+    indices row0 + j0, row0 + j1, row1 + j0, row1 + j1: first along a row by `a`, then
+    between the rows by `b`."""
     t00, t01 = flat.take(row0 + j0, axis=0), flat.take(row0 + j1, axis=0)
     t10, t11 = flat.take(row1 + j0, axis=0), flat.take(row1 + j1, axis=0)
-    if t.ndim == 3:
+    if flat.ndim == 2:
         a, b = a[..., None], b[..., None]
     top = t00 + a * (t01 - t00)
     bottom = t10 + a * (t11 - t10)
