@@ -40,6 +40,15 @@ def gap(a, b):
     return float(np.abs(a - b).max())
 
 
+def same(a, b, form=None):
+    """Whether two answers of numbers agree to :data:`SAME` (the exercises' own
+    :func:`course_lib.exercises.core.gap`): the ``same`` of :func:`mistakes_test` for chapters
+    whose answers are all numbers."""
+    from course_lib.exercises.core import gap as answer_gap
+
+    return answer_gap(a, b) < SAME
+
+
 def answer_key(value, decimals=6):
     """A hashable form of an answer, to count the distinct variants among seeds.
 
