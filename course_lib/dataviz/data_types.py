@@ -1,0 +1,3 @@
+"""data_types (being written)."""
+
+__all__ = []

@@ -1,0 +1,3 @@
+"""grids (being written)."""
+
+__all__ = []

@@ -1,0 +1,3 @@
+"""integrity (being written)."""
+
+__all__ = []

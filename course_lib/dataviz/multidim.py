@@ -1,0 +1,3 @@
+"""multidim (being written)."""
+
+__all__ = []

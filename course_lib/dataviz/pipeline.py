@@ -1,0 +1,3 @@
+"""pipeline (being written)."""
+
+__all__ = []

@@ -1,0 +1,3 @@
+"""scattered (being written)."""
+
+__all__ = []
