@@ -46,6 +46,7 @@ __all__ = [
     "relative_change",
     "segment_orientations",
     "suitability",
+    "visual_variable_name",
     "visual_variables_for",
 ]
 
@@ -54,7 +55,7 @@ __all__ = [
 # The lie factor
 # ---------------------------------------------------------------------------------------------
 
-def _as_pairs(value, name):
+def _lie_pairs(value, name):
     """`value` as a float array of shape (..., 2): first and second values."""
     v = as_array(value, name)
     if v.ndim == 0 or v.shape[-1] != 2:
@@ -129,7 +130,7 @@ def lie_factor(data, shown):
     >>> lie_factor([1, 2], [1, 4])         # circles with radius ~ value: areas 1 and 4
     3.0
     """
-    d, s = _as_pairs(data, "data"), _as_pairs(shown, "shown")
+    d, s = _lie_pairs(data, "data"), _lie_pairs(shown, "shown")
     if d.shape != s.shape:
         raise ValueError(f"data and shown must have the same shape, got {d.shape} and "
                          f"{s.shape}")
@@ -619,7 +620,7 @@ _VARIABLE_ALIASES = {"color hue": "colour hue", "hue": "colour hue", "colour": "
                      "grain": "texture", "pattern": "texture"}
 
 
-def _level(level):
+def _visual_level(level):
     if not isinstance(level, str):
         raise TypeError(f"level must be a string, got {type(level).__name__}")
     key = " ".join(level.strip().lower().split())
@@ -627,7 +628,29 @@ def _level(level):
     return key if key in DATA_LEVELS else as_choice(level, "level", DATA_LEVELS)
 
 
-def _variable(variable):
+def visual_variable_name(variable):
+    """The name of Bertin's visual variable that a typed name stands for (case, spaces and
+    common other names forgiven: ``"hue"``, ``"lightness"``, ``"length"``, ``"angle"``...).
+
+    Parameters
+    ----------
+    variable : str
+
+    Returns
+    -------
+    str
+        One of :data:`VISUAL_VARIABLES`.
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a value that is no string, or names no visual variable (the message lists them).
+
+    Examples
+    --------
+    >>> visual_variable_name(" Color "), visual_variable_name("lightness")
+    ('colour hue', 'value')
+    """
     if not isinstance(variable, str):
         raise TypeError(f"variable must be a string, got {type(variable).__name__}")
     key = " ".join(variable.strip().lower().split())
@@ -667,7 +690,7 @@ def visual_variables_for(level):
     >>> [v for v, q, _ in visual_variables_for("categorical") if q == "misleading"]
     ['value', 'size']
     """
-    table = _SUITABILITY[_level(level)]
+    table = _SUITABILITY[_visual_level(level)]
     return [(variable, quality, why) for variable, (quality, why) in table.items()]
 
 
@@ -698,4 +721,4 @@ def suitability(variable, level):
     >>> suitability("lightness", "ordinal")[0]
     'good'
     """
-    return _SUITABILITY[_level(level)][_variable(variable)]
+    return _SUITABILITY[_visual_level(level)][visual_variable_name(variable)]

@@ -245,13 +245,13 @@ ACTIONS = {
 }
 
 
-def _action_key(action):
+def _catalogue_key(action):
     if not isinstance(action, str):
         raise TypeError(f"action must be a string, got {type(action).__name__}")
     return " ".join(action.strip().lower().split())
 
 
-_ACTION_KEYS = {_action_key(a): a for a in ACTIONS}
+_ACTION_KEYS = {_catalogue_key(a): a for a in ACTIONS}
 
 
 def pipeline_stage(action):
@@ -285,7 +285,7 @@ def pipeline_stage(action):
     ...
     ValueError: action 'paint it' is not in the catalogue; the known actions are: ...
     """
-    key = _action_key(action)
+    key = _catalogue_key(action)
     if key not in _ACTION_KEYS:
         known = "; ".join(f"'{a}'" for a in ACTIONS)
         raise ValueError(f"action {action!r} is not in the catalogue; the known actions are: "
@@ -326,7 +326,7 @@ def misplaced_actions(assignment):
         right = pipeline_stage(action)
         given = canonical_stage(stage)
         if given != right:
-            name = _ACTION_KEYS[_action_key(action)]
+            name = _ACTION_KEYS[_catalogue_key(action)]
             found.append((name, given, right, ACTIONS[name][1]))
     return found
 
@@ -396,7 +396,7 @@ def visualization_use(name):
     >>> visualization_use("exploratory").needs[0]
     'speed and interactivity: many views quickly'
     """
-    key = _action_key(name) if isinstance(name, str) else name
+    key = _catalogue_key(name) if isinstance(name, str) else name
     key = {"analysis": "confirmatory", "confirmatory analysis": "confirmatory",
            "exploration": "exploratory", "exploratory analysis": "exploratory",
            "explanatory": "presentation"}.get(key, key)
@@ -453,11 +453,11 @@ def mantra_step(interaction):
     >>> [step for step, _ in MANTRA]
     ['overview', 'zoom and filter', 'details on demand']
     """
-    key = _action_key(interaction)
+    key = _catalogue_key(interaction)
     steps = tuple(step for step, _ in MANTRA)
     if key in steps:
         return key
-    table = {_action_key(k): v for k, v in MANTRA_INTERACTIONS.items()}
+    table = {_catalogue_key(k): v for k, v in MANTRA_INTERACTIONS.items()}
     if key not in table:
         known = "; ".join(f"'{k}'" for k in MANTRA_INTERACTIONS)
         raise ValueError(f"interaction {interaction!r} is not in the catalogue; the steps are "

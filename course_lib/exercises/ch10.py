@@ -32,6 +32,9 @@ from ._ch10.normalisation import Denormalize, NormalizeValues
 from ._ch10.transfer import DesignOpacity, ThresholdBands, TransferValues
 from ._ch10.colour_maps import ColormapLookup, LightnessOfColour, MonotonicMaps
 from ._ch10.map_kinds import MAP_KINDS, SCENARIOS, ChooseMapKind
+from ._ch10.pipeline import (MantraStep, OrderPipelineActions, PlacePipelineActions,
+                             VisualizationUse)
+from ._ch10.integrity import BankingAspect, ChooseVisualVariable, DataInkRatio, LieFactor
 
 __all__ = [
     "EXERCISES",
@@ -46,6 +49,15 @@ __all__ = [
     "NormalizeValues",
     "ThresholdBands",
     "TransferValues",
+    # the pipeline and exploration (10.1, 10.2), good plots (10.4)
+    "BankingAspect",
+    "ChooseVisualVariable",
+    "DataInkRatio",
+    "LieFactor",
+    "MantraStep",
+    "OrderPipelineActions",
+    "PlacePipelineActions",
+    "VisualizationUse",
 ]
 
 #: The exercises of chapter 10, in the order of the solutions notebook.
@@ -59,4 +71,13 @@ EXERCISES = (
     LightnessOfColour,
     MonotonicMaps,
     ChooseMapKind,
+    # the pipeline and exploration (10.1, 10.2), good plots (10.4)
+    OrderPipelineActions,
+    PlacePipelineActions,
+    VisualizationUse,
+    MantraStep,
+    LieFactor,
+    DataInkRatio,
+    BankingAspect,
+    ChooseVisualVariable,
 )
