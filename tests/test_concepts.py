@@ -934,3 +934,37 @@ def test_fact_ch14_environment():
     ratio = texel(1 - h, 1, 1 - h, 1) / texel(0, h, 0, h)
     assert math.isclose(ratio, 1 / (3 * math.sqrt(3)), rel_tol=0.01)
     assert math.isclose(4 * corner_angle(1, 1), 4 * math.pi / 6)
+
+
+def test_fact_ch10_pipeline_and_good_plots():
+    # the pipeline's order, the mantra and the stage of marching cubes
+    assert answer_text("ch10-pipeline-order").startswith("Data acquisition, filtering")
+    assert answer_text("ch10-mantra").startswith("Overview first")
+    assert not truth("ch10-isosurface-stage")
+    # circles with radius ~ value: the areas (pi r^2, computed here) exaggerate the change
+    assert not truth("ch10-radius-honest")
+    r1, r2 = 2.0, 3.0                                     # a change of +50 %
+    area1, area2 = math.pi * r1 ** 2, math.pi * r2 ** 2
+    lie = ((area2 - area1) / area1) / ((r2 - r1) / r1)
+    assert math.isclose(lie, 2.5) and math.isclose(lie, 2 + 0.5)
+    # bars 40 and 50 on an axis from 30: lengths 10 and 20
+    assert answer_text("ch10-truncated-axis") == "L = 4"
+    assert math.isclose(((20 - 10) / 10) / ((50 - 40) / 40), 4.0)
+    # banking: at the banked aspect ratio the mean |orientation| of a sine's segments is 45
+    # degrees (found here by bisection on the mean angle, without the library)
+    assert truth("ch10-banking")
+    x = np.linspace(0, 4 * np.pi, 200)
+    y = np.sin(x)
+    dx, dy = np.diff(x) / np.ptp(x), np.abs(np.diff(y)) / np.ptp(y)
+
+    def mean_angle(alpha):
+        return np.degrees(np.arctan2(alpha * dy, dx)).mean()
+
+    lo, hi = 1e-3, 1e3
+    for _ in range(200):
+        mid = math.sqrt(lo * hi)
+        lo, hi = (mid, hi) if mean_angle(mid) < 45 else (lo, mid)
+    assert math.isclose(mean_angle(lo), 45, abs_tol=1e-6)
+    assert mean_angle(1.0) > 60 and mean_angle(lo / 4) < 30       # square: too steep
+    assert answer_text("ch10-visual-variable-nominal") == "Colour hue"
+    assert not truth("ch10-small-multiples-scales")

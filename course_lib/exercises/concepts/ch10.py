@@ -85,4 +85,96 @@ QUESTIONS = [
          "clip it."),
         ("The colour map becomes diverging", "The kind of map does not change."),
         correct=0),
+    # the visualization pipeline and exploration (10.1, 10.2), good plots (10.4)
+    _mc(10, "ch10-pipeline-order",
+        "In which order do the stages of the visualization pipeline work on the data?",
+        ("Filtering and enrichment, data acquisition, mapping, rendering",
+         "Nothing can be filtered before it has been acquired (measured or simulated)."),
+        ("Data acquisition, mapping, filtering and enrichment, rendering",
+         "Filtering and enrichment work on data (numbers); once mapped, the data are "
+         "geometry and colours, and cleaning them there is too late."),
+        ("Data acquisition, filtering and enrichment, mapping, rendering",
+         "Raw data are cleaned and enriched, then turned into geometry with visual "
+         "attributes, which the renderer turns into pixels."),
+        ("Data acquisition, filtering and enrichment, rendering, mapping",
+         "Rendering needs the geometry and colours that mapping produces: it comes last."),
+        correct=2),
+    _tf(10, "ch10-isosurface-stage",
+        "Extracting an isosurface with marching cubes belongs to the rendering stage of the "
+        "pipeline.", False,
+        "It turns data into geometry (triangles), which is mapping; rendering then projects "
+        "and shades those triangles.",
+        "Right: marching cubes maps a scalar field to geometry, the mapping stage; rendering "
+        "(camera, shading, z-buffer) comes after it."),
+    _mc(10, "ch10-mantra",
+        "Shneiderman's *visual information-seeking mantra* reads:",
+        ("Details first, then context on demand", "The opposite: without an overview one "
+         "does not know which details matter."),
+        ("Filter, map, render", "Those are stages of the pipeline, not the steps of "
+         "exploring."),
+        ("Explore, confirm, present", "Those are the three uses of a visualization."),
+        ("Overview first, zoom and filter, then details on demand", "See everything reduced, "
+         "narrow it to what matters, and ask for exact values only when needed."),
+        correct=3),
+    _mc(10, "ch10-exploratory-needs",
+        "What does an **exploratory** visualization need most?",
+        ("Fast, interactive views of all the data, to look in many ways quickly",
+         "Without a hypothesis yet, the analyst searches: speed and interaction matter "
+         "more than polish."),
+        ("A polished, annotated single figure", "That is what a presentation needs, for an "
+         "audience that has not seen the data."),
+        ("Confidence intervals on every value", "Uncertainty matters most when a hypothesis is "
+         "tested (confirmatory analysis)."),
+        ("A print-ready colour scheme", "Looks matter for presentation; while exploring, "
+         "rough views are fine."),
+        correct=0),
+    _tf(10, "ch10-radius-honest",
+        "Showing values by circles whose radius is proportional to the value is honest: its "
+        "lie factor is 1.", False,
+        "The eye compares areas, which grow with the square of the radius: a change of 50 % "
+        "looks like one of 125 %, a lie factor of 2.5 (in general 2 + e).",
+        "Right: the area, which readers compare, grows with the square of the value; make "
+        "the area, not the radius, proportional to the value."),
+    _mc(10, "ch10-truncated-axis",
+        "Bars show 40 (last year) and 50 (this year) on a value axis that starts at 30. What "
+        "is the lie factor?",
+        ("L = 1: honest", "That is true only for bars drawn from 0. Here the drawn lengths are 10 and 20."),
+        ("L = 1.25", "That is the ratio 50 / 40 of the values, not a ratio of effects."),
+        ("L = 4", "The drawn lengths grow from 10 to 20, +100 %, for data that grow by +25 %: "
+         "100 / 25 = 4."),
+        ("L = 2", "That is the ratio of the drawn lengths, 20 / 10; divide the relative changes "
+         "instead."),
+        correct=2),
+    _mc(10, "ch10-data-ink",
+        "Which change raises the **data-ink ratio** of a bar chart without losing any data?",
+        ("Adding a 3D effect to the bars", "The side and top faces add ink that shows no "
+         "value: the ratio falls."),
+        ("Erasing the heavy background grid and the frame", "They show no data; without them "
+         "a larger share of the ink is data ink."),
+        ("Adding a picture behind the bars", "Decoration (chartjunk) adds non-data ink."),
+        ("Erasing every second bar", "That raises nothing: it loses data."),
+        correct=1),
+    _tf(10, "ch10-banking",
+        "Banking to 45° chooses a line chart's aspect ratio so that its segments are, on "
+        "average, at 45°, where differences in slope are judged best.", True,
+        "Cleveland's experiments: slopes near 45° are compared most accurately; a too flat "
+        "chart hides changes, a too tall one makes all of them look alike.",
+        "It is exactly that: the aspect ratio is chosen from the data so that the (median or "
+        "average) absolute orientation of the segments is 45°."),
+    _mc(10, "ch10-visual-variable-nominal",
+        "On a map (position is taken) you want to show which party won each district. Which "
+        "visual variable suits these **nominal** data best?",
+        ("Lightness (value)", "Lightness has an order: the darker party would look like "
+         "'more'."),
+        ("Size", "Size implies an order and amounts that parties do not have."),
+        ("Texture density", "Density is read as an order, which the parties do not have."),
+        ("Colour hue", "Distinct hues separate categories at a glance without implying an "
+         "order."),
+        correct=3),
+    _tf(10, "ch10-small-multiples-scales",
+        "In small multiples each panel should get its own vertical scale, fitted to its data, "
+        "so that no space is wasted.", False,
+        "Small multiples are read by comparing panels; with different scales the same height "
+        "means different values and the comparison misleads. Use one common scale.",
+        "Right: the panels share one scale, so that equal heights mean equal values."),
 ]
