@@ -88,12 +88,12 @@ def test_lie_factor_errors():
 
 def _rasterise(draw_data, draw_decoration):
     """Boolean ink masks of a small chart drawn by matplotlib's Agg renderer."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure       # no pyplot: the backend of other tests stays
 
     def ink(with_data, with_decoration):
-        fig = plt.figure(figsize=(2, 2), dpi=50)
+        fig = Figure(figsize=(2, 2), dpi=50)
+        FigureCanvasAgg(fig)
         ax = fig.add_axes((0, 0, 1, 1))
         ax.set_axis_off()
         ax.set(xlim=(0, 4), ylim=(0, 4))
@@ -103,7 +103,6 @@ def _rasterise(draw_data, draw_decoration):
             draw_data(ax)
         fig.canvas.draw()
         rgb = np.asarray(fig.canvas.buffer_rgba())[..., :3]
-        plt.close(fig)
         return (rgb < 250).any(axis=-1)
 
     return ink(True, False), ink(True, True)

@@ -27,7 +27,7 @@ def test_truncated_axis_lie_factor_and_bar_heights(dataset):
     values = np.array(W.DATASETS[dataset][3])
     for b in (0.0, 5.0, float(np.floor(0.9 * values.min()))):
         s = W.scene(W.State(dataset=dataset, baseline=b))
-        v1, v2 = values[0], values[-1]
+        v1 = values[0]
         assert s["lie_factor"] == pytest.approx(v1 / (v1 - b))
         h = heights(s["distorted"]["polys"])
         assert np.allclose(h / h[0], (values - b) / (v1 - b))        # lengths from b

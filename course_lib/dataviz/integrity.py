@@ -510,10 +510,13 @@ def bank_to_45(x, y, method="average"):
         else:
             lo = u
         step = value / slope if slope > 0 else np.inf
+        if abs(step) <= 1e-13 * max(1.0, abs(u)):       # converged (Newton's last step)
+            u -= step
+            break
         nxt = u - step
-        if not lo < nxt < hi:
+        if not lo < nxt < hi:                             # outside the bracket: bisect
             nxt = 0.5 * (lo + hi)
-        if abs(nxt - u) < 1e-14 * max(1.0, abs(u)) or hi - lo < 1e-15:
+        if hi - lo < 1e-15 * max(1.0, abs(u)):
             u = nxt
             break
         u = nxt
