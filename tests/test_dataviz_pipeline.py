@@ -207,7 +207,7 @@ def test_pipeline_example_stage_by_stage():
     points = np.concatenate(p["isolines"])
     assert np.allclose(interp(points[:, ::-1]), 0.5, atol=1e-9)
     # rendering: the colours lit by the hill shade
-    shade = P.hillshade(p["filtered"], z_scale=1.5, spacing=(h, h))
+    shade = P.hillshade(p["filtered"], z_scale=0.5, spacing=(h, h))
     assert np.allclose(p["rendered"], p["mapped"] * (0.35 + 0.65 * shade[..., None]))
     assert np.allclose(p["extent"], (-1 - h / 2, 1 + h / 2, -1 - h / 2, 1 + h / 2))
     with pytest.raises(ValueError, match="spikes"):

@@ -632,7 +632,7 @@ def hillshade(heights, azimuth=np.radians(135.0), elevation=np.radians(45.0), z_
 
 
 def pipeline_example(kind="hills", size=64, noise=0.03, spikes=0.02, seed=0,
-                     cmap="viridis"):
+                     cmap="viridis", relief=0.5):
     """The four stages of the pipeline on one example field, each stage's output kept.
 
     * **data acquisition**: the field :func:`course_lib.scivis.example_field_2d` "measured":
@@ -642,7 +642,8 @@ def pipeline_example(kind="hills", size=64, noise=0.03, spikes=0.02, seed=0,
       most noise, the values are normalised to [0, 1], and the gradient magnitude is derived;
     * **mapping**: a colour map gives each value a colour, and the isolines at 0.5 are
       extracted (geometry);
-    * **rendering**: the coloured surface is lit by :func:`hillshade` (ambient 0.35).
+    * **rendering**: the coloured surface, its heights exaggerated by `relief`, is lit by
+      :func:`hillshade` (ambient 0.35).
 
     Parameters
     ----------
@@ -656,6 +657,9 @@ def pipeline_example(kind="hills", size=64, noise=0.03, spikes=0.02, seed=0,
         Seeds the noise.
     cmap : str
         A colour map of :mod:`course_lib.colormaps`.
+    relief : float
+        The height scale of the rendered relief (> 0); the normalised field spans [0, 1] over
+        the square [-1, 1]^2.
 
     Returns
     -------
@@ -693,7 +697,7 @@ def pipeline_example(kind="hills", size=64, noise=0.03, spikes=0.02, seed=0,
     magnitude = np.linalg.norm(grad, axis=-1)
     mapped = colormaps.apply_colormap(filtered, cmap, in_range=(0.0, 1.0))[..., :3]
     lines = scivis.isolines(filtered, 0.5, field.spacing, field.origin)
-    shade = hillshade(filtered, z_scale=1.5, spacing=(dx, dy))
+    shade = hillshade(filtered, z_scale=relief, spacing=(dx, dy))
     rendered = mapped * (0.35 + 0.65 * shade[..., None])
     lo = field.origin[0] - dx / 2
     return {"truth": truth, "acquired": acquired, "filtered": filtered, "gradient": magnitude,
