@@ -72,10 +72,10 @@ EXERCISES = (
     MonotonicMaps,
     ChooseMapKind,
     # the pipeline and exploration (10.1, 10.2), good plots (10.4)
-    OrderPipelineActions,
     PlacePipelineActions,
-    VisualizationUse,
+    OrderPipelineActions,
     MantraStep,
+    VisualizationUse,
     LieFactor,
     DataInkRatio,
     BankingAspect,
