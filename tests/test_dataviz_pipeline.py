@@ -109,7 +109,8 @@ def brute_minmax(y, bins):
     return np.array(xs, float), np.array(ys, float)
 
 
-@pytest.mark.parametrize("n, bins", [(1000, 7), (50, 50), (37, 5), (10, 1)])
+@pytest.mark.parametrize("n, bins", [(1000, 7), (50, 50), (37, 5), (10, 1), (1000, 8),
+                                     (600, 40)])
 def test_minmax_decimate_against_a_loop(n, bins):
     rng = np.random.default_rng(n)
     y = np.round(rng.normal(size=n), 1)                 # rounded: ties occur

@@ -511,14 +511,19 @@ def minmax_decimate(y, bins, x=None):
     if bins > n:
         raise ValueError(f"bins must be at most the number of samples ({n}), got {bins}")
     starts = (np.arange(bins) * n) // bins
-    counts = np.diff(np.append(starts, n))
-    index = np.arange(n)
-    lows = np.minimum.reduceat(y, starts)
-    highs = np.maximum.reduceat(y, starts)
-    at_low = np.where(y == np.repeat(lows, counts), index, n)
-    at_high = np.where(y == np.repeat(highs, counts), index, n)
-    first_low = np.minimum.reduceat(at_low, starts)
-    first_high = np.minimum.reduceat(at_high, starts)
+    if n % bins == 0:                           # equal bins: a table, one row per bin
+        rows = y.reshape(bins, n // bins)
+        first_low = starts + np.argmin(rows, axis=1)     # argmin/argmax: the first on ties
+        first_high = starts + np.argmax(rows, axis=1)
+    else:
+        counts = np.diff(np.append(starts, n))
+        index = np.arange(n)
+        lows = np.minimum.reduceat(y, starts)
+        highs = np.maximum.reduceat(y, starts)
+        at_low = np.where(y == np.repeat(lows, counts), index, n)
+        at_high = np.where(y == np.repeat(highs, counts), index, n)
+        first_low = np.minimum.reduceat(at_low, starts)
+        first_high = np.minimum.reduceat(at_high, starts)
     pair = np.stack([np.minimum(first_low, first_high), np.maximum(first_low, first_high)], 1)
     kept = pair.ravel()
     return x[kept], y[kept]
