@@ -10,7 +10,10 @@ question's values); lightness with scikit-image's ``rgb2lab``; the lightness cur
 from matplotlib's colour maps and scikit-image; the kinds of colour map from a table typed out
 here. Never with the course_lib function the checker calls.
 """
+import importlib
 import math
+import types
+from pathlib import Path
 
 import matplotlib
 import numpy as np
@@ -252,7 +255,13 @@ GARBAGE = {"vector": VECTOR_GARBAGE, "number": NUMBER_GARBAGE, "design": DESIGN_
 DISCRETE = {"names", "kind"}
 
 
-exercises = harness.variants(ch10)
+#: The chapter's exercises are split over topic files: this one tests those in SPECS (section
+#: 10.5), tests/test_exercises_ch10_*.py the others, and test_every_exercise_is_tested_in_one_file
+#: holds the union to the chapter's list.
+TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch10.EXERCISES
+                                              if cls.__name__ in SPECS),
+                              **{name: getattr(ch10, name) for name in SPECS})
+exercises = harness.variants(TOPIC)
 
 
 def as_answer(value, form):
@@ -280,7 +289,7 @@ def same(a, b, form):
 # Tests
 # ---------------------------------------------------------------------------------------------
 
-globals().update(harness.common_tests(ch10, SPECS, GARBAGE, exercises, at_least=8))
+globals().update(harness.common_tests(TOPIC, SPECS, GARBAGE, exercises, at_least=8))
 test_mistakes_are_diagnosed = harness.mistakes_test(
     SPECS, exercises, same, as_answer=as_answer)
 
@@ -385,3 +394,16 @@ def test_design_opacity_uses_the_tolerance_policy():
         off = [(lo - w, 0.0), (lo, a + 0.01), (hi, a + 0.01), (hi + w, 0.0)]
         fb = ex.check(off)
         assert fb.status == "wrong" and fb.diagnosis == "function differs", (ex, fb)
+
+
+def test_every_exercise_is_tested_in_one_file():
+    """Together the chapter's exercise test files test every exercise of ``ch10.EXERCISES``
+    (this file the tone-mapping ones of section 10.5, tests/test_exercises_ch10_*.py the other
+    sections'), each in exactly one file."""
+    files = sorted(Path(__file__).parent.glob("test_exercises_ch10_*.py"))
+    assert files
+    tested = list(SPECS)
+    for path in files:
+        tested += list(importlib.import_module(path.stem).SPECS)
+    assert sorted(tested) == sorted(cls.__name__ for cls in ch10.EXERCISES)
+    assert len(ch10.EXERCISES) >= 19
