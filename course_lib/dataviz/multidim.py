@@ -282,8 +282,8 @@ def weather_table(n=10_000, seed=0):
     base = means[regime] + spread[regime] * rng.normal(size=(n, 4))
     base[:, 1] = np.clip(base[:, 1], 5, 100)
     base[:, 3] = np.abs(base[:, 3])
-    wet = np.clip((base[:, 1] - 55) / 10 + (1010 - base[:, 2]) / 8, 0, None)
-    rain = np.round(wet * rng.gamma(2.0, 1.5, n), 1)
+    wet = (base[:, 1] - 55) / 10 + (1010 - base[:, 2]) / 8
+    rain = np.round(np.clip(4 * wet + rng.normal(0, 2, n), 0, None), 1)
     data = np.column_stack([np.round(base, 1), rain])
     return Table(data, ("temperature", "humidity", "pressure", "wind", "rain"))
 
@@ -531,26 +531,31 @@ class PolylineRaster:
         w, h = self.width, self.height
         edges = x0 + (x1 - x0) * np.arange(w + 1) / w
         cols = np.flatnonzero((edges[1:] > xs[0]) & (edges[:-1] < xs[-1]))
-        ex = np.clip(edges, xs[0], xs[-1])
+        # the heights at the (clipped) edges of those columns, in pixel units, segment by
+        # segment (float32: a fraction of a pixel is all the precision needed)
+        ex = np.clip(edges[cols[0]:cols[-1] + 2], xs[0], xs[-1])
         seg = np.clip(np.searchsorted(xs, ex, side="right") - 1, 0, len(xs) - 2)
-        t = (ex - xs[seg]) / (xs[seg + 1] - xs[seg])
-        ys = p[:, :, 1]
-        y_edge = ys[:, seg] + (ys[:, seg + 1] - ys[:, seg]) * t
-
-        def row(y):
-            return np.clip(np.floor((y - y0) / (y1 - y0) * h), 0, h - 1).astype(np.int32)
-
+        t = ((ex - xs[seg]) / (xs[seg + 1] - xs[seg])).astype(np.float32)
+        ys = ((p[:, :, 1] - y0) * (h / (y1 - y0))).astype(np.float32)
+        y_edge = np.empty((self.n, len(ex)), dtype=np.float32)
+        for k in range(len(xs) - 1):
+            at = np.flatnonzero(seg == k)
+            y_edge[:, at] = ys[:, k:k + 1] + (ys[:, k + 1] - ys[:, k])[:, None] * t[at]
         y_low = np.minimum(y_edge[:, :-1], y_edge[:, 1:])
         y_high = np.maximum(y_edge[:, :-1], y_edge[:, 1:])
-        v_col = np.clip(np.floor((xs - x0) / (x1 - x0) * w).astype(int), 0, w - 1)
+        v_col = np.clip(np.floor((xs - x0) / (x1 - x0) * w).astype(int), 0, w - 1) - cols[0]
         for k, c in enumerate(v_col):                 # a kink inside a column
-            y_low[:, c] = np.minimum(y_low[:, c], ys[:, k])
-            y_high[:, c] = np.maximum(y_high[:, c], ys[:, k])
+            if 0 <= c < len(cols):
+                np.minimum(y_low[:, c], ys[:, k], out=y_low[:, c])
+                np.maximum(y_high[:, c], ys[:, k], out=y_high[:, c])
         # rows [low, high): a line that ends on a row's lower edge does not enter that row
-        lo = row(y_low)
-        hi = np.maximum(row(y_high - 1e-9 * (y1 - y0)), lo)
-        self.starts = (lo[:, cols] * w + cols).astype(np.int32)
-        self.ends = ((hi[:, cols] + 1) * w + cols).astype(np.int32)
+        lo = np.clip(np.floor(y_low, out=y_low), 0, h - 1, out=y_low).astype(np.int32)
+        y_high -= np.float32(1e-3)
+        hi = np.clip(np.floor(y_high, out=y_high), 0, h - 1, out=y_high).astype(np.int32)
+        np.maximum(hi, lo, out=hi)
+        cols32 = cols.astype(np.int32)
+        self.starts = lo * np.int32(w) + cols32
+        self.ends = (hi + 1) * np.int32(w) + cols32
         self._total = None
 
     def _sum(self, starts, ends):
