@@ -32,6 +32,8 @@ from ._ch10.normalisation import Denormalize, NormalizeValues
 from ._ch10.transfer import DesignOpacity, ThresholdBands, TransferValues
 from ._ch10.colour_maps import ColormapLookup, LightnessOfColour, MonotonicMaps
 from ._ch10.map_kinds import MAP_KINDS, SCENARIOS, ChooseMapKind
+from ._ch10.multidim import (BrushSelection, CovarianceEigen, DualLine, DualPoint,
+                             ProjectRecord, ReadParallelCoordinates, StarGlyphVertex)
 
 __all__ = [
     "EXERCISES",
@@ -46,6 +48,14 @@ __all__ = [
     "NormalizeValues",
     "ThresholdBands",
     "TransferValues",
+    # 10.7 multidimensional data
+    "ReadParallelCoordinates",
+    "DualLine",
+    "DualPoint",
+    "BrushSelection",
+    "StarGlyphVertex",
+    "CovarianceEigen",
+    "ProjectRecord",
 ]
 
 #: The exercises of chapter 10, in the order of the solutions notebook.
@@ -59,4 +69,12 @@ EXERCISES = (
     LightnessOfColour,
     MonotonicMaps,
     ChooseMapKind,
+    # 10.7 multidimensional data
+    ReadParallelCoordinates,
+    DualLine,
+    DualPoint,
+    BrushSelection,
+    StarGlyphVertex,
+    CovarianceEigen,
+    ProjectRecord,
 )
