@@ -1,5 +1,5 @@
-"""Tests of the multidimensional-data exercises (course_lib/exercises/_ch10/multidim.py), on
-tests/exercise_harness.py.
+"""Tests of the multidimensional-data exercises (course_lib/exercises/_ch10/multidim.py and
+pca.py), on tests/exercise_harness.py.
 
 The right answers and every anticipated slip are recomputed here independently: crossings of
 parallel-coordinate lines by a double loop over the pairs of records; the point-line duality by
@@ -16,12 +16,12 @@ import scipy.linalg
 
 import exercise_harness as harness
 from exercise_harness import SEEDS
-from course_lib.exercises._ch10 import multidim as module
+from course_lib.exercises._ch10 import multidim, pca
 
 NAMES = ["ReadParallelCoordinates", "DualLine", "DualPoint", "BrushSelection",
          "StarGlyphVertex", "CovarianceEigen", "ProjectRecord"]
-topic = SimpleNamespace(EXERCISES=[getattr(module, n) for n in NAMES],
-                        **{n: getattr(module, n) for n in NAMES})
+CLASSES = {n: getattr(pca if hasattr(pca, n) else multidim, n) for n in NAMES}
+topic = SimpleNamespace(EXERCISES=list(CLASSES.values()), **CLASSES)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -259,6 +259,6 @@ def test_every_relation_is_asked():
 
 @pytest.mark.parametrize("name", SPECS)
 def test_a_fresh_seed_is_a_fresh_exercise(name):
-    cls = getattr(module, name)
+    cls = CLASSES[name]
     found = {cls(seed=seed).statement() for seed in range(100)}
     assert len(found) >= 40, (name, len(found))

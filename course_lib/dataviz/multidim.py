@@ -131,7 +131,7 @@ def attribute_index(axis, d, names=None):
     return int(axis)
 
 
-def _interval(value, name):
+def _brush_interval(value, name):
     """A brush range (low, high), finite, low < high."""
     try:
         low, high = (float(v) for v in value)
@@ -704,7 +704,7 @@ def range_brush(data, axis, low, high, names=None):
     """
     table = _records(data)
     k = attribute_index(axis, table.shape[1], names)
-    lo, hi = _interval((low, high), f"range of axis {axis!r}" if isinstance(axis, str)
+    lo, hi = _brush_interval((low, high), f"range of axis {axis!r}" if isinstance(axis, str)
                        else f"range of axis {k}")
     column = table[:, k]
     return (column >= lo) & (column <= hi)
@@ -720,8 +720,8 @@ def rectangle_brush(data, x_axis, y_axis, x_range, y_range, names=None):
     [False, True, False]
     """
     table = _records(data)
-    return (range_brush(table, x_axis, *_interval(x_range, "x_range"), names=names)
-            & range_brush(table, y_axis, *_interval(y_range, "y_range"), names=names))
+    return (range_brush(table, x_axis, *_brush_interval(x_range, "x_range"), names=names)
+            & range_brush(table, y_axis, *_brush_interval(y_range, "y_range"), names=names))
 
 
 def combine_brushes(masks, how="and"):
@@ -789,8 +789,8 @@ def brush_mask(data, brushes, how="and", names=None):
                             f"got {brush!r}")
         inside = np.ones(len(table), dtype=bool)
         for axis, interval in brush.items():
-            inside &= range_brush(table, axis, *_interval(interval, f"range of axis {axis!r}"),
-                                  names=names)
+            low, high = _brush_interval(interval, f"range of axis {axis!r}")
+            inside &= range_brush(table, axis, low, high, names=names)
         masks.append(inside)
     if not masks:
         as_choice(how.lower() if isinstance(how, str) else how, "how", ("and", "or"))
@@ -923,7 +923,8 @@ def chernoff_face(params):
         parts[f"{side} brow"] = np.array([[s * (ex - 0.15), ey + er + 0.1 - tilt],
                                           [s * (ex + 0.15), ey + er + 0.1 + tilt]])
     length = 0.15 + 0.3 * nose
-    parts["nose"] = np.array([[0.0, 0.1], [-0.06, 0.1 - length], [0.06, 0.1 - length]])
+    parts["nose"] = np.array([[0.0, 0.1], [-0.06, 0.1 - length], [0.06, 0.1 - length],
+                              [0.0, 0.1]])
     u = np.linspace(-1, 1, 21)
     half = (0.2 + 0.3 * mouth_w) * a
     bend = (curve - 0.5) * 0.4                        # > 0: the corners up, a smile

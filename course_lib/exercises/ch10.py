@@ -32,8 +32,9 @@ from ._ch10.normalisation import Denormalize, NormalizeValues
 from ._ch10.transfer import DesignOpacity, ThresholdBands, TransferValues
 from ._ch10.colour_maps import ColormapLookup, LightnessOfColour, MonotonicMaps
 from ._ch10.map_kinds import MAP_KINDS, SCENARIOS, ChooseMapKind
-from ._ch10.multidim import (BrushSelection, CovarianceEigen, DualLine, DualPoint,
-                             ProjectRecord, ReadParallelCoordinates, StarGlyphVertex)
+from ._ch10.multidim import (BrushSelection, DualLine, DualPoint, ReadParallelCoordinates,
+                             StarGlyphVertex)
+from ._ch10.pca import CovarianceEigen, ProjectRecord
 
 __all__ = [
     "EXERCISES",
