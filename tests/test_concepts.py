@@ -968,3 +968,52 @@ def test_fact_ch10_pipeline_and_good_plots():
     assert mean_angle(1.0) > 60 and mean_angle(lo / 4) < 30       # square: too steep
     assert answer_text("ch10-visual-variable-nominal") == "Colour hue"
     assert not truth("ch10-small-multiples-scales")
+
+
+def test_fact_ch10_multidim():
+    # parallel coordinates of y = m x + c: the lines v = a' + (b' - a') u of its points share
+    # one point, between the axes exactly for a negative normalised slope; a perfect linear
+    # relation on the data's own ranges has m' = +-1 (parallel lines, or one crossing at 1/2)
+    assert answer_text("ch10-pc-negative").startswith("Lines that cross near one point")
+    assert truth("ch10-pc-duality")
+    for m_n, c_n in ((-2.0, 0.9), (-0.5, 0.3), (0.4, 0.1), (3.0, -0.5)):
+        a = RNG.uniform(0, 1, 6)
+        b = m_n * a + c_n
+        u, v = np.linalg.solve([[b[0] - a[0], -1.0], [b[1] - a[1], -1.0]], [-a[0], -a[1]])
+        assert np.allclose(a + (b - a) * u, v)                        # every line meets there
+        assert math.isclose(u, 1 / (1 - m_n)) and (0 < u < 1) == (m_n < 0)
+    x = RNG.uniform(3, 9, 50)
+    for m in (2.5, -0.7):
+        y = m * x + 4
+        xn, yn = (x - x.min()) / np.ptp(x), (y - y.min()) / np.ptp(y)
+        slopes = yn - xn
+        assert np.allclose(slopes, 0) if m > 0 else np.allclose(xn + slopes * 0.5, 0.5)
+    # adjacent axes only: d - 1 neighbours among d(d - 1)/2 pairs; the matrix has 15 plots
+    assert not truth("ch10-pc-order")
+    assert answer_text("ch10-splom-count") == "15"
+    assert len(list(itertools.combinations(range(6), 2))) == 15 and 6 - 1 < 15
+    # the first principal component: the direction of largest variance (numpy's SVD)
+    assert answer_text("ch10-pca-first").startswith("The unit eigenvector")
+    data = RNG.normal(size=(400, 3)) @ np.array([[3, 1, 0], [0, 1, 0.5], [0, 0, 0.2]])
+    centred = data - data.mean(axis=0)
+    w = np.linalg.svd(centred, full_matrices=False)[2][0]
+    directions = RNG.normal(size=(2000, 3))
+    directions /= np.linalg.norm(directions, axis=1, keepdims=True)
+    assert np.var(centred @ w) >= np.var(centred @ directions.T, axis=0).max()
+    values, vectors = np.linalg.eigh(np.cov(centred.T))
+    assert np.isclose(abs(vectors[:, -1] @ w), 1)
+    # units: the same lengths in millimetres dominate the first component; standardised not
+    assert truth("ch10-pca-standardise")
+    lengths = RNG.normal(size=500)
+    masses = 0.6 * lengths + 0.8 * RNG.normal(size=500)
+    table = np.column_stack([1000 * lengths, masses / 1000])      # mm and tonnes
+    first = np.linalg.svd(table - table.mean(axis=0), full_matrices=False)[2][0]
+    assert abs(first[0]) > 0.999999
+    z = (table - table.mean(axis=0)) / table.std(axis=0)
+    first = np.linalg.svd(z, full_matrices=False)[2][0]
+    assert np.allclose(np.abs(first), 1 / math.sqrt(2))
+    # brushes: AND is contained in OR
+    assert not truth("ch10-brush-and-or")
+    a, b = RNG.uniform(size=(2, 300)) < 0.4
+    assert ((a & b) <= (a | b)).all() and (a & b).sum() < (a | b).sum()
+    assert "perceive" in answer_text("ch10-chernoff")

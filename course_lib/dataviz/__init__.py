@@ -16,7 +16,8 @@ r"""Chapter 10: visualization principles: the pipeline, data, good plots, multid
 * :mod:`~course_lib.dataviz.integrity`: graphical integrity: the lie factor of a drawn
   encoding, the data-ink ratio, banking to 45 degrees, visual variables and the data they suit.
 * :mod:`~course_lib.dataviz.multidim`: multidimensional data: scatterplot matrices, parallel
-  coordinates, glyphs (star plots), brushing, projection by principal components.
+  coordinates and their point-line duality, glyphs (star plots, Chernoff faces), brushing.
+* :mod:`~course_lib.dataviz.projection`: projection by principal components (PCA).
 
 Conventions
 -----------
@@ -31,7 +32,8 @@ from .grids import *  # noqa: F401,F403
 from .scattered import *  # noqa: F401,F403
 from .integrity import *  # noqa: F401,F403
 from .multidim import *  # noqa: F401,F403
-from . import data_types, grids, integrity, multidim, pipeline, scattered
+from .projection import *  # noqa: F401,F403
+from . import data_types, grids, integrity, multidim, pipeline, projection, scattered
 
 __all__ = sorted(pipeline.__all__ + data_types.__all__ + grids.__all__ + scattered.__all__
-                 + integrity.__all__ + multidim.__all__)
+                 + integrity.__all__ + multidim.__all__ + projection.__all__)

@@ -35,6 +35,9 @@ from ._ch10.map_kinds import MAP_KINDS, SCENARIOS, ChooseMapKind
 from ._ch10.pipeline import (MantraStep, OrderPipelineActions, PlacePipelineActions,
                              VisualizationUse)
 from ._ch10.integrity import BankingAspect, ChooseVisualVariable, DataInkRatio, LieFactor
+from ._ch10.multidim import (BrushSelection, DualLine, DualPoint, ReadParallelCoordinates,
+                             StarGlyphVertex)
+from ._ch10.pca import CovarianceEigen, ProjectRecord
 
 __all__ = [
     "EXERCISES",
@@ -58,6 +61,14 @@ __all__ = [
     "OrderPipelineActions",
     "PlacePipelineActions",
     "VisualizationUse",
+    # 10.7 multidimensional data
+    "ReadParallelCoordinates",
+    "DualLine",
+    "DualPoint",
+    "BrushSelection",
+    "StarGlyphVertex",
+    "CovarianceEigen",
+    "ProjectRecord",
 ]
 
 #: The exercises of chapter 10, in the order of the solutions notebook.
@@ -80,4 +91,12 @@ EXERCISES = (
     DataInkRatio,
     BankingAspect,
     ChooseVisualVariable,
+    # 10.7 multidimensional data
+    ReadParallelCoordinates,
+    DualLine,
+    DualPoint,
+    BrushSelection,
+    StarGlyphVertex,
+    CovarianceEigen,
+    ProjectRecord,
 )
