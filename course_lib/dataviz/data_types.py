@@ -99,7 +99,7 @@ class MeasurementLevel(NamedTuple):
     examples: tuple
 
 
-def _row(name, kind, transformations, examples):
+def _level_row(name, kind, transformations, examples):
     rank = _LEVEL_NAMES.index(name)
 
     def allowed(names):
@@ -110,16 +110,16 @@ def _row(name, kind, transformations, examples):
 
 #: The levels of measurement by name, weakest first: what each permits.
 LEVELS = {
-    "nominal": _row("nominal", "qualitative",
+    "nominal": _level_row("nominal", "qualitative",
                     "any one-to-one relabelling (swap the names, renumber the codes)",
                     ("blood group", "postcode", "land-use class")),
-    "ordinal": _row("ordinal", "qualitative",
+    "ordinal": _level_row("ordinal", "qualitative",
                     "any strictly increasing function (only the order must survive)",
                     ("school grade A-F", "rank in a race", "rating from 'poor' to 'good'")),
-    "interval": _row("interval", "quantitative",
+    "interval": _level_row("interval", "quantitative",
                      "x -> a x + b with a > 0 (a new unit and a new zero)",
                      ("temperature in °C", "calendar year", "time of day")),
-    "ratio": _row("ratio", "quantitative",
+    "ratio": _level_row("ratio", "quantitative",
                   "x -> a x with a > 0 (a new unit only: the zero is fixed)",
                   ("temperature in K", "mass", "length", "a count")),
 }
@@ -165,7 +165,7 @@ ATTRIBUTE_EXAMPLES = {
 }
 
 
-def _level(level, name="level"):
+def _level_name(level, name="level"):
     if isinstance(level, MeasurementLevel):
         return level.name
     return as_choice(level.strip().lower() if isinstance(level, str) else level, name,
@@ -205,7 +205,7 @@ def permits(level, what):
     ...
     ValueError: what must be an operation ('equality', 'order', ... got 'variance'
     """
-    name = _level(level)
+    name = _level_name(level)
     key = what.strip().lower() if isinstance(what, str) else what
     key = _OPERATION_SYMBOLS.get(key, key) if isinstance(key, str) else key
     if not isinstance(key, str) or key not in _WEAKEST:
@@ -309,7 +309,7 @@ def is_admissible_transform(level, before, after, rtol=1e-9):
     >>> is_admissible_transform("ordinal", [1, 2, 3], [1, 10, 11])
     True
     """
-    name = _level(level)
+    name = _level_name(level)
     x = as_array(before, "before").ravel()
     y = as_array(after, "after").ravel()
     if x.shape != y.shape:

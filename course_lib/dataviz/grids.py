@@ -166,7 +166,7 @@ def _tensor_nodes(axes):
     return np.stack([m.ravel() for m in mesh], axis=1)
 
 
-def _axis(values, name):
+def _grid_axis(values, name):
     a = as_array(values, name)
     if a.ndim != 1 or a.size < 2:
         raise ValueError(f"{name} must be a 1D array of at least 2 coordinates, got shape "
@@ -198,7 +198,7 @@ def rectilinear_grid(*axes):
     if len(axes) not in (2, 3):
         raise ValueError(f"rectilinear_grid takes 2 or 3 coordinate arrays (x, y(, z)), got "
                          f"{len(axes)}")
-    ax = [_axis(a, "xyz"[c]) for c, a in enumerate(axes)]
+    ax = [_grid_axis(a, "xyz"[c]) for c, a in enumerate(axes)]
     s = tuple(len(a) for a in ax[::-1])
     return Grid("rectilinear", _tensor_nodes(ax), s, _structured_cells(s),
                 {**{"xyz"[c]: a.copy() for c, a in enumerate(ax)}, "counts": np.array(s[::-1])})
@@ -233,7 +233,7 @@ def curvilinear_grid(coordinates):
                 {"coordinates": c.copy(), "counts": np.array(s[::-1])})
 
 
-def _cells(cells, n_nodes, name="cells"):
+def _cell_indices(cells, n_nodes, name="cells"):
     arr = np.asarray(cells)
     if arr.dtype.kind not in "iu" or arr.ndim != 2 or arr.shape[0] < 1 or arr.shape[1] < 3:
         raise ValueError(f"{name} must be an (m, k) array of whole-number corner indices, "
@@ -244,7 +244,7 @@ def _cells(cells, n_nodes, name="cells"):
     return arr.astype(np.intp)
 
 
-def _node_array(points, name="points"):
+def _grid_nodes_array(points, name="points"):
     p = as_array(points, name)
     if p.ndim != 2 or p.shape[1] not in (2, 3) or p.shape[0] < 1:
         raise ValueError(f"{name} must have shape (n, 2) or (n, 3), got shape {p.shape}")
@@ -270,8 +270,8 @@ def unstructured_grid(points, cells):
     >>> g.kind, sum(a.size for a in g.stored.values())          # 8 coordinates + 6 indices
     ('unstructured', 14)
     """
-    p = _node_array(points)
-    c = _cells(cells, len(p))
+    p = _grid_nodes_array(points)
+    c = _cell_indices(cells, len(p))
     return Grid("unstructured", p.copy(), None, c, {"points": p.copy(), "cells": c.copy()})
 
 
@@ -292,7 +292,7 @@ def scattered_points(points):
     >>> g.kind, g.cells is None, g.stored["points"].size
     ('scattered', True, 6)
     """
-    p = _node_array(points)
+    p = _grid_nodes_array(points)
     return Grid("scattered", p.copy(), None, None, {"points": p.copy()})
 
 
@@ -349,11 +349,11 @@ def _grid_kind(x, y, z, cells, rtol):
         if z is not None:
             raise ValueError("give the coordinates as x, y(, z) or as one (n, d) array of "
                              "points, not x and z alone")
-        p = _node_array(x, "points")
+        p = _grid_nodes_array(x, "points")
         if cells is None:
             return "scattered", (f"{len(p)} positions and no cells: nothing says which points "
                                  "are neighbours")
-        c = _cells(cells, len(p))
+        c = _cell_indices(cells, len(p))
         return "unstructured", (f"{len(p)} positions and {len(c)} explicit cells of "
                                 f"{c.shape[1]} corners each")
     if cells is not None:
@@ -362,7 +362,7 @@ def _grid_kind(x, y, z, cells, rtol):
     arrays = [as_array(a, "xyz"[c]) for c, a in enumerate((x, y, z)) if a is not None]
     d = len(arrays)
     if all(a.ndim == 1 for a in arrays):
-        axes = [_axis(a, "xyz"[c]) for c, a in enumerate(arrays)]
+        axes = [_grid_axis(a, "xyz"[c]) for c, a in enumerate(arrays)]
         return _uniform_or_rectilinear(axes, rtol, "one coordinate array per axis")
     shape = arrays[0].shape
     if not all(a.shape == shape for a in arrays) or len(shape) != d or min(shape) < 2:
@@ -481,7 +481,7 @@ def grid_memory(kind, shape, components=1, *, cell=None, bytes_per_number=None):
 # Interpolation on grids
 # ---------------------------------------------------------------------------------------------
 
-def _outside_policy(outside, allowed):
+def _grid_outside_policy(outside, allowed):
     if isinstance(outside, str):
         return as_choice(outside, "outside", allowed)
     if isinstance(outside, (bool, np.bool_)) or not isinstance(outside, (int, float)):
@@ -490,7 +490,7 @@ def _outside_policy(outside, allowed):
     return float(outside)
 
 
-def _samples(values, name="values"):
+def _grid_samples(values, name="values"):
     """Sample values as a finite float array; NaN (missing data) named as such."""
     v = np.asarray(values)
     if v.dtype.kind == "f" and np.isnan(v).any():
@@ -532,12 +532,12 @@ def rectilinear_interpolate(values, axes, points, outside="raise"):
     >>> rectilinear_interpolate(f, (x, y), [[2.5, 1.0], [0.5, 0.5]])
     array([3.5, 1. ])
     """
-    policy = _outside_policy(outside, ("raise", "clamp"))
-    ax = [_axis(a, f"axes[{c}]") for c, a in enumerate(axes)]
+    policy = _grid_outside_policy(outside, ("raise", "clamp"))
+    ax = [_grid_axis(a, f"axes[{c}]") for c, a in enumerate(axes)]
     d = len(ax)
     if d not in (2, 3):
         raise ValueError(f"axes must hold 2 or 3 coordinate arrays (x, y(, z)), got {d}")
-    v = _samples(values)
+    v = _grid_samples(values)
     if v.ndim not in (d, d + 1) or v.shape[:d] != tuple(len(a) for a in ax[::-1]):
         raise ValueError(f"values must have shape {tuple(len(a) for a in ax[::-1])} (ny, nx"
                          f"{', ' if d == 2 else ', nz first, '}last axis x) optionally with an "
@@ -655,7 +655,7 @@ def inverse_bilinear(corners, points):
     return np.stack([u, v], axis=-1)
 
 
-def _locate(lo, hi, points, inside_test):
+def _locate_cells(lo, hi, points, inside_test):
     """For each point, the lowest-numbered cell (box) that holds it, or -1, and the inside
     test's extra result for that pair. `inside_test(cells, pts_idx)` returns (inside, extra)."""
     cell_of = np.full(len(points), -1, dtype=np.intp)
@@ -676,7 +676,7 @@ def _locate(lo, hi, points, inside_test):
     return cell_of, extra_of
 
 
-def _finish(out, found, policy, what):
+def _fill_outside(out, found, policy, what):
     if not found.all():
         if policy == "raise":
             raise ValueError(f"{int((~found).sum())} of the points lie outside every {what}; "
@@ -715,14 +715,14 @@ def triangle_interpolate(nodes, triangles, values, points, outside="raise"):
     >>> triangle_interpolate(nodes, tris, [0.0, 4.0, 8.0, 12.0], [[1, 2], [3, 3]])
     array([5., 9.])
     """
-    policy = _outside_policy(outside, ("raise",))
+    policy = _grid_outside_policy(outside, ("raise",))
     nd = as_array(nodes, "nodes")
     if nd.ndim != 2 or nd.shape[1] != 2 or len(nd) < 3:
         raise ValueError(f"nodes must have shape (n, 2) with n >= 3, got shape {nd.shape}")
-    tri = _cells(triangles, len(nd), "triangles")
+    tri = _cell_indices(triangles, len(nd), "triangles")
     if tri.shape[1] != 3:
         raise ValueError(f"triangles must have 3 corners each, got shape {tri.shape}")
-    v = _samples(values)
+    v = _grid_samples(values)
     if v.ndim not in (1, 2) or len(v) != len(nd):
         raise ValueError(f"values must have one entry (or row) per node ({len(nd)}), got "
                          f"shape {v.shape}")
@@ -736,13 +736,13 @@ def triangle_interpolate(nodes, triangles, values, points, outside="raise"):
         lam = barycentric(flat[idx], c[:, 0], c[:, 1], c[:, 2])
         return np.all(lam >= -1e-10, axis=1), lam
 
-    cell, lam = _locate(lo, hi, flat, inside)
+    cell, lam = _locate_cells(lo, hi, flat, inside)
     found = cell >= 0
     vals = v[tri[np.maximum(cell, 0)]]                     # (m, 3) or (m, 3, k)
     lam = np.clip(lam, 0.0, 1.0)
     lam /= np.where(found, lam.sum(axis=1), 1.0)[:, None]
     out = np.einsum("mi,mi...->m...", lam, vals)
-    out = _finish(out, found, policy, "triangle")
+    out = _fill_outside(out, found, policy, "triangle")
     return out.reshape(p.shape[:-1] + out.shape[1:])
 
 
@@ -780,11 +780,11 @@ def curvilinear_interpolate(coordinates, values, points, method="bilinear", outs
     array([3.5, 4.5])
     """
     method = as_choice(method, "method", ("bilinear", "triangles"))
-    policy = _outside_policy(outside, ("raise",))
+    policy = _grid_outside_policy(outside, ("raise",))
     grid = curvilinear_grid(coordinates)
     if len(grid.shape) != 2:
         raise ValueError("curvilinear_interpolate handles 2D grids, shape (ny, nx, 2)")
-    v = _samples(values)
+    v = _grid_samples(values)
     if v.shape[:2] != grid.shape or v.ndim not in (2, 3):
         raise ValueError(f"values must have shape {grid.shape} (one per sample) optionally "
                          f"with an axis of components, got shape {v.shape}")
@@ -806,13 +806,13 @@ def curvilinear_interpolate(coordinates, values, points, method="bilinear", outs
         ins = ok & (u >= -tol) & (u <= 1 + tol) & (w >= -tol) & (w <= 1 + tol)
         return ins, np.stack([u, w], axis=1)
 
-    cell, uv = _locate(lo, hi, flat, inside)
+    cell, uv = _locate_cells(lo, hi, flat, inside)
     found = cell >= 0
     u, w = np.clip(uv[:, 0], 0, 1), np.clip(uv[:, 1], 0, 1)
     weights = np.stack([(1 - u) * (1 - w), u * (1 - w), u * w, (1 - u) * w], axis=1)
     vals = flat_values[grid.cells[np.maximum(cell, 0)]]
     out = np.einsum("mi,mi...->m...", weights, vals)
-    out = _finish(out, found, policy, "cell")
+    out = _fill_outside(out, found, policy, "cell")
     return out.reshape(p.shape[:-1] + out.shape[1:])
 
 

@@ -106,10 +106,10 @@ def scattered_data(points, values):
     ...
     ValueError: points 0 and 2 are the same position (0, 0) with different values 5 and 7: ...
     """
-    p = _finite(points, "points")
+    p = _finite_data(points, "points")
     if p.ndim != 2 or p.shape[1] not in (2, 3) or len(p) < 1:
         raise ValueError(f"points must have shape (n, 2) or (n, 3), got shape {p.shape}")
-    v = _finite(values, "values")
+    v = _finite_data(values, "values")
     if v.ndim not in (1, 2) or len(v) != len(p):
         raise ValueError(f"values must have one entry (or row) per point: {len(p)} points but "
                          f"values of shape {v.shape}")
@@ -132,7 +132,7 @@ def scattered_data(points, values):
     return p, v
 
 
-def _finite(value, name):
+def _finite_data(value, name):
     arr = np.asarray(value) if not isinstance(value, (str, bytes)) else value
     if isinstance(arr, np.ndarray) and arr.dtype.kind == "f" and np.isnan(arr).any():
         where = np.argwhere(np.isnan(arr))[0]
@@ -142,7 +142,7 @@ def _finite(value, name):
     return as_array(value, name)
 
 
-def _query(query, d):
+def _query_points(query, d):
     q = as_points(query, "query", dims=d)
     return q, q.reshape(-1, d)
 
@@ -173,7 +173,7 @@ def nearest_interpolate(points, values, query):
     array([1., 2., 1.])
     """
     p, v = scattered_data(points, values)
-    q, flat = _query(query, p.shape[1])
+    q, flat = _query_points(query, p.shape[1])
     index, _ = _k_nearest(p, flat, 1)
     out = v[index[:, 0]]
     return out.reshape(q.shape[:-1] + v.shape[1:])
@@ -183,7 +183,7 @@ def nearest_interpolate(points, values, query):
 # Delaunay triangulation and linear interpolation
 # ---------------------------------------------------------------------------------------------
 
-def _orient(a, b, p):
+def _orient_2d(a, b, p):
     """Twice the signed area of (a, b, p): > 0 when p is left of a -> b."""
     return (b[..., 0] - a[..., 0]) * (p[..., 1] - a[..., 1]) \
         - (b[..., 1] - a[..., 1]) * (p[..., 0] - a[..., 0])
@@ -238,7 +238,7 @@ def delaunay_triangulation(points):
     >>> sorted(tuple(sorted(t)) for t in tris.tolist())
     [(0, 1, 2), (0, 2, 3)]
     """
-    p = _finite(points, "points")
+    p = _finite_data(points, "points")
     if p.ndim != 2 or p.shape[1] != 2 or len(p) < 3:
         raise ValueError(f"points must have shape (n, 2) with n >= 3 for a triangulation, got "
                          f"shape {p.shape}")
@@ -247,7 +247,7 @@ def delaunay_triangulation(points):
                          "two triangles at once (merge repeated samples first, see "
                          "scattered_data)")
     n = len(p)
-    area = _orient(p[0], p[1], p[2:])
+    area = _orient_2d(p[0], p[1], p[2:])
     scale = np.ptp(p, axis=0).max() ** 2
     off = np.flatnonzero(np.abs(area) > 1e-12 * scale)
     if off.size == 0:
@@ -260,7 +260,7 @@ def delaunay_triangulation(points):
     store = _TriangleStore(p, tri, capacity=2 * n + 16)
     for i in range(n):
         if i not in (0, 1, k):
-            _insert(p, store, i)
+            _bowyer_watson_insert(p, store, i)
     tri = store.tri[:store.used]
     return tri[store.alive[:store.used] & (tri[:, 2] >= 0)]
 
@@ -313,7 +313,7 @@ def _circumcircles(p, tri):
     return centre, r2
 
 
-def _insert(p, store, i):
+def _bowyer_watson_insert(p, store, i):
     """Bowyer-Watson step: insert point i into the triangles of `store`."""
     q = p[i]
     used = store.used
@@ -330,7 +330,7 @@ def _insert(p, store, i):
     if ghost.any():
         tg = t[ghost]
         a, b = p[tg[:, 0]], p[tg[:, 1]]
-        side = _orient(a, b, q)
+        side = _orient_2d(a, b, q)
         along = np.sum((q - a) * (b - a), axis=1)
         between = (side == 0) & (along > 0) & (along < np.sum((b - a) ** 2, axis=1))
         conflict[ghost] = (side > 0) | between
@@ -461,18 +461,18 @@ def shepard_interpolate(points, values, query, power=2.0, radius=None, outside="
     """
     p_exp = as_positive(power, "power", "the p of the weights 1/d^p")
     p, v = scattered_data(points, values)
-    q, flat = _query(query, p.shape[1])
+    q, flat = _query_points(query, p.shape[1])
     rows = v.reshape(len(v), -1)
     if radius is None:
         out = _shepard_global(p, rows, flat, p_exp)
     else:
         r = as_positive(radius, "radius", "the radius of the local form")
-        policy = _fill_policy(outside)
+        policy = _scattered_fill_policy(outside)
         out = _shepard_local(p, rows, flat, p_exp, r, policy)
     return out.reshape(q.shape[:-1] + v.shape[1:])
 
 
-def _fill_policy(outside):
+def _scattered_fill_policy(outside):
     if isinstance(outside, str):
         return as_choice(outside, "outside", ("raise",))
     if isinstance(outside, (bool, np.bool_)) or not isinstance(outside, (int, float)):
@@ -573,10 +573,10 @@ def rbf_kernel(r, kernel="gaussian", epsilon=1.0):
     r = as_array(r, "r")
     if (r < 0).any():
         raise ValueError("r must be distances (>= 0)")
-    return _phi(r * eps, name)
+    return _rbf_phi(r * eps, name)
 
 
-def _phi(s, name):
+def _rbf_phi(s, name):
     if name == "gaussian":
         return np.exp(-s * s)
     if name == "multiquadric":
@@ -644,7 +644,7 @@ def _rbf_options(kernel, epsilon, degree):
     return name, eps, deg
 
 
-def _poly(x, degree):
+def _rbf_poly(x, degree):
     """The polynomial basis at (already shifted and scaled) points x (..., d)."""
     if degree < 0:
         return np.zeros(x.shape[:-1] + (0,))
@@ -652,7 +652,7 @@ def _poly(x, degree):
     return ones if degree == 0 else np.concatenate([ones, x], axis=-1)
 
 
-def _distances(a, b):
+def _pairwise_distances(a, b):
     """Euclidean distances between the rows of a (..., m, d) and b (..., n, d): (..., m, n)."""
     d2 = np.zeros(a.shape[:-1] + (b.shape[-2],))
     for c in range(a.shape[-1]):
@@ -666,8 +666,8 @@ def _solve_rbf(centres, rows, name, eps, degree):
     shift = centres.mean(axis=-2, keepdims=True)
     scale = np.abs(centres - shift).max(axis=(-2, -1), keepdims=True)
     scale = np.where(scale > 0, scale, 1.0)
-    a = _phi(_distances(centres, centres) * eps, name)
-    pm = _poly((centres - shift) / scale, degree)
+    a = _rbf_phi(_pairwise_distances(centres, centres) * eps, name)
+    pm = _rbf_poly((centres - shift) / scale, degree)
     n, m = a.shape[-1], pm.shape[-1]
     system = np.zeros(a.shape[:-2] + (n + m, n + m))
     system[..., :n, :n] = a
@@ -769,14 +769,14 @@ def rbf_evaluate(model, query):
     """
     if not isinstance(model, RBFModel):
         raise TypeError(f"model must be an RBFModel from rbf_fit, got {type(model).__name__}")
-    q, flat = _query(query, model.centres.shape[1])
+    q, flat = _query_points(query, model.centres.shape[1])
     out = np.empty((len(flat), model.weights.shape[1]))
     step = max(1, _CHUNK // len(model.centres))
     for start in range(0, len(flat), step):
         x = flat[start:start + step]
-        phi = _phi(_distances(x, model.centres) * model.epsilon, model.kernel)
+        phi = _rbf_phi(_pairwise_distances(x, model.centres) * model.epsilon, model.kernel)
         out[start:start + step] = phi @ model.weights \
-            + _poly((x - model.shift) / model.scale, model.degree) @ model.poly
+            + _rbf_poly((x - model.shift) / model.scale, model.degree) @ model.poly
     return out.reshape(q.shape[:-1] + tuple(model.value_shape))
 
 
@@ -815,7 +815,7 @@ def rbf_interpolate(points, values, query, kernel="gaussian", epsilon=1.0, degre
     """
     name, eps, deg = _rbf_options(kernel, epsilon, degree)
     p, v = scattered_data(points, values)
-    q, flat = _query(query, p.shape[1])
+    q, flat = _query_points(query, p.shape[1])
     if neighbors is None:
         return rbf_evaluate(rbf_fit(p, v, name, eps, deg), q)
     k = as_whole(neighbors, "neighbors", 1)
@@ -837,9 +837,9 @@ def rbf_interpolate(points, values, query, kernel="gaussian", epsilon=1.0, degre
         members = order[bounds[start]:bounds[min(start + per, len(sets))]]
         g = inverse[members] - start
         x = flat[members][:, None, :]
-        phi = _phi(_distances(x, p[group[g]]) * eps, name)[:, 0, :]
+        phi = _rbf_phi(_pairwise_distances(x, p[group[g]]) * eps, name)[:, 0, :]
         out[members] = np.einsum("mi,mik->mk", phi, weights[g]) + np.einsum(
-            "mj,mjk->mk", _poly((x[:, 0, :] - shift[g, 0]) / scale[g, 0], deg), poly[g])
+            "mj,mjk->mk", _rbf_poly((x[:, 0, :] - shift[g, 0]) / scale[g, 0], deg), poly[g])
     return out.reshape(q.shape[:-1] + v.shape[1:])
 
 
@@ -916,7 +916,7 @@ def resample_to_grid(points, values, shape, extent=None, method="shepard", **opt
     p, v = scattered_data(points, values)
     if p.shape[1] != 2:
         raise ValueError("resample_to_grid resamples 2D points, shape (n, 2)")
-    ny, nx = (as_whole(s, "shape", 2) for s in _pair(shape, "shape"))
+    ny, nx = (as_whole(s, "shape", 2) for s in _shape_pair(shape, "shape"))
     if extent is None:
         lo, hi = p.min(axis=0), p.max(axis=0)
         box = (lo[0], hi[0], lo[1], hi[1])
@@ -933,7 +933,7 @@ def resample_to_grid(points, values, shape, extent=None, method="shepard", **opt
     return out.reshape((ny, nx) + v.shape[1:]), grid
 
 
-def _pair(value, name):
+def _shape_pair(value, name):
     s = np.asarray(value, dtype=object).ravel()
     if s.size != 2:
         raise ValueError(f"{name} must be (ny, nx), got {value!r}")
