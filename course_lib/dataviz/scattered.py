@@ -486,9 +486,7 @@ def _shepard_global(p, rows, flat, power):
     step = max(1, _CHUNK // len(p))
     for start in range(0, m, step):
         q = flat[start:start + step]
-        d2 = np.zeros((len(q), len(p)))
-        for c in range(p.shape[1]):
-            d2 += (q[:, c:c + 1] - p[None, :, c]) ** 2
+        d2 = _squared_distances(q, p)
         nearest = d2.min(axis=1, keepdims=True)
         hit = nearest[:, 0] == 0
         # weights divided by the largest one: (d_min / d_i)^p in (0, 1], no overflow
@@ -654,10 +652,21 @@ def _rbf_poly(x, degree):
 
 def _pairwise_distances(a, b):
     """Euclidean distances between the rows of a (..., m, d) and b (..., n, d): (..., m, n)."""
-    d2 = np.zeros(a.shape[:-1] + (b.shape[-2],))
+    return np.sqrt(_squared_distances(a, b))
+
+
+def _squared_distances(a, b):
+    """Squared distances between the rows of a (..., m, d) and b (..., n, d), computed
+    coordinate by coordinate in place (no m x n x d temporary)."""
+    d2 = None
     for c in range(a.shape[-1]):
-        d2 += (a[..., :, None, c] - b[..., None, :, c]) ** 2
-    return np.sqrt(d2)
+        diff = a[..., :, None, c] - b[..., None, :, c]
+        diff *= diff
+        if d2 is None:
+            d2 = diff
+        else:
+            d2 += diff
+    return d2
 
 
 def _solve_rbf(centres, rows, name, eps, degree):
