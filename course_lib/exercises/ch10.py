@@ -32,6 +32,8 @@ from ._ch10.normalisation import Denormalize, NormalizeValues
 from ._ch10.transfer import DesignOpacity, ThresholdBands, TransferValues
 from ._ch10.colour_maps import ColormapLookup, LightnessOfColour, MonotonicMaps
 from ._ch10.map_kinds import MAP_KINDS, SCENARIOS, ChooseMapKind
+from ._ch10.data import (GRID_SCENARIOS, ChooseGridKind, ClassifyLevels, GridMemory,
+                         NearestVsLinear, ShepardByHand)
 
 __all__ = [
     "EXERCISES",
@@ -46,6 +48,13 @@ __all__ = [
     "NormalizeValues",
     "ThresholdBands",
     "TransferValues",
+    # section 10.3, data aspects and scattered data (course_lib/exercises/_ch10/data.py)
+    "GRID_SCENARIOS",
+    "ChooseGridKind",
+    "ClassifyLevels",
+    "GridMemory",
+    "NearestVsLinear",
+    "ShepardByHand",
 ]
 
 #: The exercises of chapter 10, in the order of the solutions notebook.
@@ -59,4 +68,10 @@ EXERCISES = (
     LightnessOfColour,
     MonotonicMaps,
     ChooseMapKind,
+    # section 10.3, data aspects and scattered data
+    ClassifyLevels,
+    ChooseGridKind,
+    GridMemory,
+    ShepardByHand,
+    NearestVsLinear,
 )
