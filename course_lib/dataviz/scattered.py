@@ -305,11 +305,13 @@ def _circumcircles(p, tri):
         a, b, c = (p[tri[real, k]] for k in range(3))
         ab, ac = b - a, c - a
         d = 2 * (ab[:, 0] * ac[:, 1] - ab[:, 1] * ac[:, 0])
-        lb, lc = np.sum(ab * ab, axis=1), np.sum(ac * ac, axis=1)
-        off = np.stack([ac[:, 1] * lb - ab[:, 1] * lc, ab[:, 0] * lc - ac[:, 0] * lb],
-                       axis=1) / d[:, None]
-        centre[real] = a + off
-        r2[real] = np.sum(off * off, axis=1)
+        lb = ab[:, 0] * ab[:, 0] + ab[:, 1] * ab[:, 1]
+        lc = ac[:, 0] * ac[:, 0] + ac[:, 1] * ac[:, 1]
+        ox = (ac[:, 1] * lb - ab[:, 1] * lc) / d
+        oy = (ab[:, 0] * lc - ac[:, 0] * lb) / d
+        centre[real, 0] = a[:, 0] + ox
+        centre[real, 1] = a[:, 1] + oy
+        r2[real] = ox * ox + oy * oy
     return centre, r2
 
 
@@ -331,8 +333,9 @@ def _bowyer_watson_insert(p, store, i):
         tg = t[ghost]
         a, b = p[tg[:, 0]], p[tg[:, 1]]
         side = _orient_2d(a, b, q)
-        along = np.sum((q - a) * (b - a), axis=1)
-        between = (side == 0) & (along > 0) & (along < np.sum((b - a) ** 2, axis=1))
+        ab, aq = b - a, q - a
+        along = aq[:, 0] * ab[:, 0] + aq[:, 1] * ab[:, 1]
+        between = (side == 0) & (along > 0) & (along < ab[:, 0] ** 2 + ab[:, 1] ** 2)
         conflict[ghost] = (side > 0) | between
     bad = near[conflict]
     if bad.size == 0:
@@ -343,8 +346,9 @@ def _bowyer_watson_insert(p, store, i):
     n1 = len(p) + 1
     key = (edges[:, 0] + 1) * n1 + (edges[:, 1] + 1)
     reverse = (edges[:, 1] + 1) * n1 + (edges[:, 0] + 1)
-    border = edges[~np.isin(reverse, key)]
-    if len(np.unique(border[:, 0])) != len(border) or len(np.unique(border[:, 1])) != len(border):
+    border = edges[~(reverse[:, None] == key[None, :]).any(axis=1)]   # edges met once
+    starts, ends = border[:, 0].tolist(), border[:, 1].tolist()
+    if len(set(starts)) != len(starts) or len(set(ends)) != len(ends):
         raise ValueError(f"point {i}: the cavity of the Bowyer-Watson step is not a simple "
                          "polygon (points nearly on one circle, beyond the precision of the "
                          "tests): jitter the points slightly")

@@ -76,10 +76,18 @@ def _truth():
 
 
 @lru_cache(maxsize=64)
+def _triangulation(n):
+    """The Delaunay triangulation of the first n samples (read-only)."""
+    tris = scattered.delaunay_triangulation(sample_points(n)[0])
+    tris.setflags(write=False)
+    return tris
+
+
+@lru_cache(maxsize=64)
 def _edges(n):
     """The edges of the Delaunay triangulation of the first n samples, as segments."""
     p, _ = sample_points(n)
-    tris = scattered.delaunay_triangulation(p)
+    tris = _triangulation(n)
     pairs = np.sort(np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]], tris[:, [2, 0]]]), axis=1)
     pairs = np.unique(pairs, axis=0)
     return p[pairs]
@@ -106,7 +114,8 @@ class State:
 def _field(method, n, power, kernel, epsilon):
     """The interpolant on the grid (read-only), or the error message of an unsolvable RBF."""
     p, f = sample_points(n)
-    options = {"linear": {"outside": np.nan}, "shepard": {"power": power},
+    options = {"linear": {"outside": np.nan, "triangles": _triangulation(n)},
+               "shepard": {"power": power},
                "rbf": {"kernel": kernel, "epsilon": epsilon}}.get(method, {})
     try:
         values, _ = scattered.resample_to_grid(p, f, (GRID, GRID), (0, 1, 0, 1), method,
