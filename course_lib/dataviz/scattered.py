@@ -575,18 +575,24 @@ def rbf_kernel(r, kernel="gaussian", epsilon=1.0):
     r = as_array(r, "r")
     if (r < 0).any():
         raise ValueError("r must be distances (>= 0)")
-    return _rbf_phi(r * eps, name)
+    return _rbf_phi((r * eps) ** 2, name)
 
 
-def _rbf_phi(s, name):
+def _rbf_phi(s2, name):
+    """The kernel at squared scaled distances s2 = (eps r)^2, in place where it can (s2 is
+    consumed): no square root for the Gaussian and the thin-plate spline."""
     if name == "gaussian":
-        return np.exp(-s * s)
-    if name == "multiquadric":
-        return np.sqrt(1.0 + s * s)
-    if name == "inverse_multiquadric":
-        return 1.0 / np.sqrt(1.0 + s * s)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(s > 0, s * s * np.log(np.where(s > 0, s, 1.0)), 0.0)
+        np.negative(s2, out=s2)
+        return np.exp(s2, out=s2)
+    if name in ("multiquadric", "inverse_multiquadric"):
+        s2 += 1.0
+        np.sqrt(s2, out=s2)
+        return s2 if name == "multiquadric" else np.reciprocal(s2, out=s2)
+    out = np.zeros_like(s2)                           # r^2 ln r = s2 ln(s2) / 2, 0 at r = 0
+    np.log(s2, out=out, where=s2 > 0)
+    out *= s2
+    out *= 0.5
+    return out
 
 
 class RBFModel(NamedTuple):
@@ -654,11 +660,6 @@ def _rbf_poly(x, degree):
     return ones if degree == 0 else np.concatenate([ones, x], axis=-1)
 
 
-def _pairwise_distances(a, b):
-    """Euclidean distances between the rows of a (..., m, d) and b (..., n, d): (..., m, n)."""
-    return np.sqrt(_squared_distances(a, b))
-
-
 def _squared_distances(a, b):
     """Squared distances between the rows of a (..., m, d) and b (..., n, d), computed
     coordinate by coordinate in place (no m x n x d temporary)."""
@@ -679,7 +680,7 @@ def _solve_rbf(centres, rows, name, eps, degree):
     shift = centres.mean(axis=-2, keepdims=True)
     scale = np.abs(centres - shift).max(axis=(-2, -1), keepdims=True)
     scale = np.where(scale > 0, scale, 1.0)
-    a = _rbf_phi(_pairwise_distances(centres, centres) * eps, name)
+    a = _rbf_phi(_squared_distances(centres, centres) * eps ** 2, name)
     pm = _rbf_poly((centres - shift) / scale, degree)
     n, m = a.shape[-1], pm.shape[-1]
     system = np.zeros(a.shape[:-2] + (n + m, n + m))
@@ -787,7 +788,8 @@ def rbf_evaluate(model, query):
     step = max(1, _CHUNK // len(model.centres))
     for start in range(0, len(flat), step):
         x = flat[start:start + step]
-        phi = _rbf_phi(_pairwise_distances(x, model.centres) * model.epsilon, model.kernel)
+        phi = _rbf_phi(_squared_distances(x, model.centres) * model.epsilon ** 2,
+                       model.kernel)
         out[start:start + step] = phi @ model.weights \
             + _rbf_poly((x - model.shift) / model.scale, model.degree) @ model.poly
     return out.reshape(q.shape[:-1] + tuple(model.value_shape))
@@ -850,7 +852,7 @@ def rbf_interpolate(points, values, query, kernel="gaussian", epsilon=1.0, degre
         members = order[bounds[start]:bounds[min(start + per, len(sets))]]
         g = inverse[members] - start
         x = flat[members][:, None, :]
-        phi = _rbf_phi(_pairwise_distances(x, p[group[g]]) * eps, name)[:, 0, :]
+        phi = _rbf_phi(_squared_distances(x, p[group[g]]) * eps ** 2, name)[:, 0, :]
         out[members] = np.einsum("mi,mik->mk", phi, weights[g]) + np.einsum(
             "mj,mjk->mk", _rbf_poly((x[:, 0, :] - shift[g, 0]) / scale[g, 0], deg), poly[g])
     return out.reshape(q.shape[:-1] + v.shape[1:])
