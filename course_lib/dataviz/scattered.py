@@ -25,7 +25,7 @@ with **different** values it is refused: an interpolant cannot take two values a
 
 Size: every method here is vectorised and bounds its memory (the distance matrix is built in
 chunks). Shepard's global form costs n x m distances (10,000 points on a 100 x 100 grid: 10^8,
-about a second). A *global* RBF needs the dense n x n system: at n = 10,000 that is 800 MB and
+well under a second). A *global* RBF needs the dense n x n system: at n = 10,000 that is 800 MB and
 about 3 x 10^11 operations, so :func:`rbf_interpolate` refuses more than
 :data:`MAX_GLOBAL_RBF_CENTRES` centres and asks for ``neighbors=k``: the local form, which for
 each query point fits an RBF to its k nearest data points only (as scipy's
