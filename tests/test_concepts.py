@@ -1017,3 +1017,52 @@ def test_fact_ch10_multidim():
     a, b = RNG.uniform(size=(2, 300)) < 0.4
     assert ((a & b) <= (a | b)).all() and (a & b).sum() < (a | b).sum()
     assert "perceive" in answer_text("ch10-chernoff")
+
+
+def test_fact_ch10_data():
+    """Section 10.3: levels of measurement, grid memory, Shepard, RBFs, linear interpolation."""
+    from scipy.interpolate import RBFInterpolator, griddata
+
+    assert answer_text("ch10-level-postcode").startswith("Nominal")
+    # "the mean postcode is closest to 5612" does not survive a one-to-one relabelling, which
+    # is admissible for names: statements about means of codes are meaningless
+    codes = np.array([3011.0, 5612.0, 9712.0])
+    new = np.array([1000.0, 9000.0, 2000.0])                        # the same areas renamed
+    closest = np.argmin(np.abs(codes - codes.mean()))
+    assert closest == 1 and np.argmin(np.abs(new - new.mean())) != closest
+    assert not truth("ch10-celsius-ratio")
+    c = np.array([10.0, 20.0])
+    assert c[1] / c[0] == 2 and not math.isclose((c[1] * 1.8 + 32) / (c[0] * 1.8 + 32), 2)
+    assert math.isclose((c[1] * 1.8 + 32) / (c[0] * 1.8 + 32), 68 / 50)
+    assert "Uniform" in answer_text("ch10-grid-least-memory")
+    stored = {"uniform": 2 + 2 + 2, "rectilinear": 100 + 100, "curvilinear": 2 * 100 * 100}
+    assert min(stored, key=stored.get) == "uniform" and stored["uniform"] == 6
+    assert answer_text("ch10-scattered-vs-unstructured").startswith("The cells")
+    rng = np.random.default_rng(10)
+    p = rng.uniform(size=(40, 2))
+    f = rng.uniform(size=40)
+    q = rng.uniform(size=(200, 2))
+    d = np.linalg.norm(q[:, None] - p[None], axis=2)
+    assert "Nearest" in answer_text("ch10-shepard-large-power")
+    order = np.sort(d, axis=1)
+    clear = order[:, 1] > 1.2 * order[:, 0]
+    w = (order[:, :1] / d) ** 200                                    # 1/d^200, scaled
+    sharp = (w @ f) / w.sum(axis=1)
+    assert np.allclose(sharp[clear], griddata(p, f, q[clear], "nearest"), atol=1e-9)
+    assert truth("ch10-shepard-range")
+    for power in (0.5, 1, 2, 4):
+        s = (d ** -power @ f) / np.sum(d ** -power, axis=1)
+        assert f.min() <= s.min() and s.max() <= f.max()
+    step = np.where(p[:, 0] > 0.5, 1.0, 0.0)                        # a jump: RBFs overshoot
+    rbf = RBFInterpolator(p, step, kernel="gaussian", epsilon=4.0, degree=-1)(q)
+    assert rbf.max() > 1.0 or rbf.min() < 0.0
+    assert "linear system" in answer_text("ch10-rbf-coefficients")
+    a = np.exp(-(4.0 * np.linalg.norm(p[:, None] - p[None], axis=2)) ** 2)
+    lam = np.linalg.solve(a, f)
+    by_hand = np.exp(-(4.0 * d) ** 2) @ lam
+    assert np.allclose(by_hand, RBFInterpolator(p, f, kernel="gaussian", epsilon=4.0,
+                                                degree=-1)(q), atol=1e-6)
+    assert not truth("ch10-linear-outside-hull")
+    outside = np.array([[2.0, 2.0], [-1.0, 0.5]])
+    assert Delaunay(p).find_simplex(outside).tolist() == [-1, -1]
+    assert np.isnan(griddata(p, f, outside, "linear")).all()

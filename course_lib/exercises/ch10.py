@@ -38,6 +38,8 @@ from ._ch10.integrity import BankingAspect, ChooseVisualVariable, DataInkRatio, 
 from ._ch10.multidim import (BrushSelection, DualLine, DualPoint, ReadParallelCoordinates,
                              StarGlyphVertex)
 from ._ch10.pca import CovarianceEigen, ProjectRecord
+from ._ch10.data import (GRID_SCENARIOS, ChooseGridKind, ClassifyLevels, GridMemory,
+                         NearestVsLinear, ShepardByHand)
 
 __all__ = [
     "EXERCISES",
@@ -69,6 +71,13 @@ __all__ = [
     "StarGlyphVertex",
     "CovarianceEigen",
     "ProjectRecord",
+    # section 10.3, data aspects and scattered data (course_lib/exercises/_ch10/data.py)
+    "GRID_SCENARIOS",
+    "ChooseGridKind",
+    "ClassifyLevels",
+    "GridMemory",
+    "NearestVsLinear",
+    "ShepardByHand",
 ]
 
 #: The exercises of chapter 10, in the order of the solutions notebook.
@@ -99,4 +108,10 @@ EXERCISES = (
     StarGlyphVertex,
     CovarianceEigen,
     ProjectRecord,
+    # section 10.3, data aspects and scattered data
+    ClassifyLevels,
+    ChooseGridKind,
+    GridMemory,
+    ShepardByHand,
+    NearestVsLinear,
 )

@@ -260,4 +260,84 @@ QUESTIONS = [
         ("They only work for categorical data", "Each feature varies continuously with a "
          "normalised numeric value."),
         correct=1),
+    # section 10.3: data aspects, grids and scattered data
+    _mc(10, "ch10-level-postcode",
+        "A table of customers has a column of postcodes (such as 3011, 5612, 9712). What is "
+        "their level of measurement?",
+        ("Interval: they are numbers with equal steps", "Numbers as symbols are not amounts: "
+         "the difference 5612 - 3011 measures nothing."),
+        ("Nominal: the digits are a label of an area", "Only 'same or different' means "
+         "something; the mean of two postcodes names no place."),
+        ("Ordinal: a larger postcode lies further north", "Any such order is an accident of "
+         "how the codes were handed out, not a property the data are about."),
+        ("Ratio: postcode 0 does not exist", "Ratios of codes are meaningless, and there is no "
+         "amount whose absence a zero could mean."),
+        correct=1),
+    _tf(10, "ch10-celsius-ratio",
+        "A temperature of 20 °C is twice as warm as 10 °C.", False,
+        "No: °C is an interval scale with an arbitrary zero. In °F the same temperatures are 68 "
+        "and 50 (a ratio of 1.36), in kelvin 293.15 and 283.15: only ratios of kelvin "
+        "temperatures mean something.",
+        "Right: the ratio depends on where the scale puts its zero, so it means nothing; "
+        "differences (10 degrees warmer) do."),
+    _mc(10, "ch10-grid-least-memory",
+        "For the same 100 x 100 samples, which kind of grid stores the fewest numbers to give "
+        "the position of every sample?",
+        ("Rectilinear", "It stores one coordinate per sample along each axis: 100 + 100 "
+         "numbers."),
+        ("Curvilinear", "It stores every sample's position: 20,000 numbers."),
+        ("Uniform: an origin, a spacing and a count per axis", "Six numbers for 10,000 "
+         "positions: every position follows from the index."),
+        ("Scattered", "Every position is stored, 20,000 numbers, and still nothing says which "
+         "samples are neighbours."),
+        correct=2),
+    _mc(10, "ch10-scattered-vs-unstructured",
+        "What does an unstructured grid store that scattered data do not?",
+        ("The positions of the samples", "Both store every position."),
+        ("A spacing per axis", "Neither has one: that is what uniform grids store."),
+        ("The values at the samples", "Both store values; the difference is the topology."),
+        ("The cells: which samples form each triangle or tetrahedron", "With cells a point "
+         "can be located in a cell and interpolated from its corners; scattered data first "
+         "need neighbours found or a triangulation built."),
+        correct=3),
+    _mc(10, "ch10-shepard-large-power",
+        "In Shepard's method, $s(x) = \\sum w_i f_i / \\sum w_i$ with $w_i = 1/d_i^p$, what "
+        "does the interpolant approach as the power $p$ grows very large?",
+        ("The mean of all values", "That is the limit $p \\to 0$, where all weights become "
+         "equal."),
+        ("Nearest-neighbour interpolation: the closest sample's weight dominates all others",
+         "The ratio of two weights is $(d_j/d_i)^p$, which goes to 0 for every farther sample, "
+         "so the field becomes constant on Voronoi cells."),
+        ("Linear interpolation on the Delaunay triangulation", "No weighting by distance "
+         "alone gives the barycentric weights of a triangle."),
+        ("It diverges: the weights become infinite", "The weights are normalised: only their "
+         "ratios matter, and those stay between 0 and 1."),
+        correct=1),
+    _tf(10, "ch10-shepard-range",
+        "Shepard's interpolant (global, with normalised weights) never takes a value below the "
+        "smallest or above the largest data value.", True,
+        "Right: it is a weighted mean with positive weights that sum to 1, so it stays within "
+        "the data's range (unlike radial basis functions, which may overshoot).",
+        "It does: normalised positive weights make every value a convex combination of the "
+        "data, so it cannot leave their range."),
+    _mc(10, "ch10-rbf-coefficients",
+        "How are the coefficients $\\lambda_i$ of a radial-basis-function interpolant "
+        "$s(x) = \\sum_i \\lambda_i\\,\\phi(\\lVert x - x_i \\rVert)$ found?",
+        ("$\\lambda_i = f_i$", "That would interpolate only if the basis functions did not "
+         "overlap; they do."),
+        ("$\\lambda_i = 1/d_i^p$, as in Shepard's method", "Those are Shepard's weights, "
+         "which depend on the query point; RBF coefficients do not."),
+        ("By solving the $n \\times n$ linear system $s(x_j) = f_j$, with "
+         "$A_{ji} = \\phi(\\lVert x_j - x_i \\rVert)$",
+         "Every centre influences every sample, so the coefficients are coupled: one dense "
+         "system, $O(n^3)$ to solve directly."),
+        ("From the Delaunay triangulation of the samples", "RBFs need no triangulation; that is "
+         "linear interpolation."),
+        correct=2),
+    _tf(10, "ch10-linear-outside-hull",
+        "Linear interpolation on the Delaunay triangulation of scattered points gives a value "
+        "at every point of the plane.", False,
+        "No: the triangles cover only the convex hull of the samples; outside it there is no "
+        "triangle and no value (Shepard and RBFs, in contrast, extrapolate).",
+        "Right: outside the convex hull of the samples there is no triangle to interpolate in."),
 ]
