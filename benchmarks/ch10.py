@@ -8,7 +8,9 @@
 * sRGB -> CIE L*a*b* against scikit-image's ``color.rgb2lab``;
 * the transfer-function editor's preview compositing (rays sampled once, classification by a
   lookup table, all rays composited at once) against ray casting the same view from scratch
-  with ``course_lib.scivis.volume_render``: the ratio is what sampling once saves.
+  with ``course_lib.scivis.volume_render``: the ratio is what sampling once saves;
+* and the topic files of the chapter's other sections: the pipeline and graphical integrity
+  (ch10_integrity), scattered data (ch10_scattered), multidimensional data (ch10_multidim).
 """
 import numpy as np
 
@@ -59,7 +61,15 @@ def operations(quick=False):
             image_size=tfw.PREVIEW_SIZE, step=voxel * tfw.PREVIEW_STEP, spacing=ct.spacing,
             origin=ct.origin, extent=tfw.EXTENT, unit_length=voxel, early_termination=None),
         "scivis.volume_render (same view, from scratch)", repeat))
+    for topic in _topics():
+        rows += topic.operations(quick)
     return rows
+
+
+def _topics():
+    from benchmarks import ch10_integrity, ch10_multidim, ch10_scattered
+
+    return (ch10_integrity, ch10_scattered, ch10_multidim)
 
 
 def widgets(quick=False):
@@ -103,4 +113,6 @@ def widgets(quick=False):
                            lambda i: setattr(explorer.name, "value", names[i % len(names)]),
                            explorer.fig.canvas.draw, repeat))
     plt.close(explorer.fig)
+    for topic in _topics():
+        rows += topic.widgets(quick)
     return rows

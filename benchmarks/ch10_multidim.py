@@ -102,6 +102,7 @@ def widgets(quick=False):
 
     from benchmarks import widget_row
     from course_lib.widgets import parallel_coordinates as pcw
+    from course_lib.widgets import scatterplot_matrix as smw
 
     repeat = 5 if quick else 40
     rows = []
@@ -111,14 +112,14 @@ def widgets(quick=False):
     rows.append(widget_row("parallel coordinates explorer (brush drag, 10,000 records)",
                            lambda i: pc.brush_drag(1, 0.1 + 0.01 * (i % 30), 0.7),
                            pc.fig.canvas.draw, repeat, target_ms=40.0))
-    splom = pcw.ScatterplotMatrixExplorer()
+    splom = smw.ScatterplotMatrixExplorer()
     splom.selection.set_dataset("weather (10,000)")
     splom.fig.canvas.draw()
     rows.append(widget_row("scatterplot matrix explorer (rectangle drag, 10,000 records)",
                            lambda i: splom.brush_rectangle((4, 0), (0.2, 0.2),
                                                            (0.5 + 0.01 * (i % 30), 0.8)),
                            splom.fig.canvas.draw, repeat, target_ms=40.0))
-    both = pcw.link()
+    both = smw.link()
     both.pc.dataset.value = "weather (10,000)"
     both.pc.fig.canvas.draw()
     both.splom.fig.canvas.draw()

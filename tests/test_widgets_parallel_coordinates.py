@@ -12,6 +12,7 @@ from widget_harness import drag, mouse
 
 from course_lib.dataviz import multidim as md
 from course_lib.widgets import parallel_coordinates as W
+from course_lib.widgets import scatterplot_matrix as S
 
 
 def _loop_mask(table, brushes, how):
@@ -67,11 +68,11 @@ def test_splom_scene_dots_and_rectangle():
     sel = W.Selection("correlation: clusters")
     sel.clear()
     sel.set_brush(("rect",), {0: (-1.0, 1.5), 1: (0.0, 3.0)})
-    s = W.splom_scene(W.SplomState(selection=sel, side=100))
+    s = S.splom_scene(S.SplomState(selection=sel, side=100))
     d, size = 2, 50
     y = md.normalise_columns(sel.table.data)
     # a dot at the pixel of its normalised position (inset by the margin), 3 x 3 for 200 records
-    pix = np.clip(np.floor((W.MARGIN + (1 - 2 * W.MARGIN) * y) * size), 0, size - 1).astype(int)
+    pix = np.clip(np.floor((S.MARGIN + (1 - 2 * S.MARGIN) * y) * size), 0, size - 1).astype(int)
     expected = np.zeros((100, 100), int)
     mask = _loop_mask(sel.table, list(sel.brushes.values()), "AND")
     chosen = np.zeros((100, 100), int)
@@ -86,10 +87,10 @@ def test_splom_scene_dots_and_rectangle():
     assert np.array_equal(s["selected_counts"], chosen)
     lo = sel.table.data.min(axis=0)
     hi = sel.table.data.max(axis=0)
-    x0 = W.MARGIN + (1 - 2 * W.MARGIN) * (-1.0 - lo[0]) / (hi[0] - lo[0])
-    y0 = 0 + W.MARGIN + (1 - 2 * W.MARGIN) * (0.0 - lo[1]) / (hi[1] - lo[1])
+    x0 = S.MARGIN + (1 - 2 * S.MARGIN) * (-1.0 - lo[0]) / (hi[0] - lo[0])
+    y0 = 0 + S.MARGIN + (1 - 2 * S.MARGIN) * (0.0 - lo[1]) / (hi[1] - lo[1])
     assert s["rect"][:2] == pytest.approx((x0, y0))
-    names = W.splom_scene(W.SplomState(selection=sel, side=100, diagonal="names"))
+    names = S.splom_scene(S.SplomState(selection=sel, side=100, diagonal="names"))
     assert not np.array_equal(names["image"], s["image"])        # no histogram bars
 
 
@@ -192,7 +193,7 @@ def test_drag_on_a_flipped_axis():
 
 
 def test_gestures_hit_what_they_name():
-    both = W.link()
+    both = S.link()
     pc, splom = both.pc, both.splom
     for explorer, ax in ((pc, pc.ax), (splom, splom.ax)):
         (gesture,) = explorer.mouse_gestures()
@@ -208,7 +209,7 @@ def test_gestures_hit_what_they_name():
 
 
 def test_the_link_works_both_ways():
-    both = W.link()
+    both = S.link()
     pc, splom = both.pc, both.splom
     pc.brush_drag(2, 0.0, 0.4, final=True)
     assert np.array_equal(splom.current["mask"], pc.selection.mask())
@@ -236,4 +237,4 @@ def test_the_link_works_both_ways():
 def test_link_refuses_two_selections():
     pc = W.ParallelCoordinatesExplorer()
     with pytest.raises(ValueError, match="share pc's selection"):
-        W.link(pc, W.ScatterplotMatrixExplorer())
+        S.link(pc, S.ScatterplotMatrixExplorer())

@@ -80,8 +80,25 @@ __all__ = [
     "ShepardByHand",
 ]
 
-#: The exercises of chapter 10, in the order of the solutions notebook.
+#: The exercises of chapter 10, in the order of the solutions notebook (the lesson's order).
 EXERCISES = (
+    # the pipeline and exploration (10.1, 10.2)
+    PlacePipelineActions,
+    OrderPipelineActions,
+    MantraStep,
+    VisualizationUse,
+    # data: levels of measurement, grids, scattered data (10.3)
+    ClassifyLevels,
+    ChooseGridKind,
+    GridMemory,
+    ShepardByHand,
+    NearestVsLinear,
+    # good plots (10.4)
+    LieFactor,
+    DataInkRatio,
+    BankingAspect,
+    ChooseVisualVariable,
+    # tone mapping: normalisation, transfer functions, colour maps (10.5)
     NormalizeValues,
     Denormalize,
     TransferValues,
@@ -91,16 +108,7 @@ EXERCISES = (
     LightnessOfColour,
     MonotonicMaps,
     ChooseMapKind,
-    # the pipeline and exploration (10.1, 10.2), good plots (10.4)
-    PlacePipelineActions,
-    OrderPipelineActions,
-    MantraStep,
-    VisualizationUse,
-    LieFactor,
-    DataInkRatio,
-    BankingAspect,
-    ChooseVisualVariable,
-    # 10.7 multidimensional data
+    # multidimensional data (10.7)
     ReadParallelCoordinates,
     DualLine,
     DualPoint,
@@ -108,10 +116,4 @@ EXERCISES = (
     StarGlyphVertex,
     CovarianceEigen,
     ProjectRecord,
-    # section 10.3, data aspects and scattered data
-    ClassifyLevels,
-    ChooseGridKind,
-    GridMemory,
-    ShepardByHand,
-    NearestVsLinear,
 )
