@@ -372,6 +372,26 @@ def part_scivis(p):
     p.add("ambient_occlusion/icosphere", (ao.visibility, ao.std_error))
 
 
+def part_dataviz(p):
+    """Chapter 10: the Delaunay triangulation (Bowyer-Watson; a square grid's points are
+    cocircular four at a time, so the diagonals are ties), nearest neighbours (equidistant
+    queries), the parallel-coordinates raster and brushes, and PCA's axes."""
+    from course_lib import dataviz
+    from course_lib.widgets import parallel_coordinates, scattered
+    samples, values = scattered.sample_points(60)
+    g = np.stack(np.meshgrid(np.arange(5.0), np.arange(4.0)), -1).reshape(-1, 2)
+    for name, pts in (("explorer", samples), ("grid", g)):
+        p.add(f"dataviz/delaunay/{name}", dataviz.delaunay_triangulation(pts))
+    query = np.stack(np.meshgrid(np.arange(0, 4.01, 0.5), np.arange(0, 3.01, 0.5)), -1)
+    p.add("dataviz/nearest/grid", dataviz.nearest_interpolate(
+        g, np.arange(len(g), dtype=float), query.reshape(-1, 2)))
+    s = parallel_coordinates.scene(parallel_coordinates.State())
+    p.add("dataviz/parallel_coordinates", (s["mask"], s["counts"], s["selected_counts"],
+                                           s["title"]))
+    cars = dataviz.cars_table()
+    p.add("dataviz/pca/cars", dataviz.pca(cars.data, k=2, standardise=True))
+
+
 def part_widgets(p):
     from course_lib.widgets import camera, simplification, zbuffer
     states = [camera.State(),
