@@ -1,11 +1,23 @@
-r"""Chapter 10 exercises: normalisation, transfer functions and colour maps, exam style.
+r"""Chapter 10 exercises: the pipeline, data, good plots, tone mapping, multidimensional data.
 
-Each class is one kind of exam question: normalise values from one range onto another and undo
-it; evaluate a piecewise-linear transfer function and a step (thresholding) function; design an
-opacity transfer function for a band of values; look a value up in a colour map; compute the
-perceived lightness :math:`L^*` of a colour; tell from their lightness curves which colour maps
-can show an ordered quantity; and choose the kind of colour map (sequential, diverging,
-qualitative) that a kind of data needs. The ``seed`` draws numbers that work out by hand: whole
+Each class is one kind of exam question, in the order of the lesson. The visualization
+pipeline (10.1-10.2): place actions in its stages and order them, name the step of "overview
+first, zoom and filter, details on demand" and the use (exploratory, confirmatory,
+presentation) of a scenario. Data (10.3): classify attributes by level of measurement, name the
+kind of grid of a data set and count its memory, interpolate scattered samples by Shepard's
+method by hand, compare nearest-neighbour and linear values on a triangulation. Good plots
+(10.4): the lie factor of a graphic, the data-ink ratio, banking to 45 degrees, the visual
+variable for a kind of data. Tone mapping (10.5): normalise values from one range onto another
+and undo it; evaluate a piecewise-linear transfer function and a step (thresholding) function;
+design an opacity transfer function for a band of values; look a value up in a colour map;
+compute the perceived lightness :math:`L^*` of a colour (background: perception, 10.6, is
+outside the curriculum); tell from their lightness curves which colour maps can show an ordered
+quantity; choose the kind of colour map (sequential, diverging, qualitative) a kind of data
+needs. Multidimensional data (10.7): read a parallel-coordinates plot, the point-line duality
+both ways, the records a brush selects, a vertex of a star glyph, a principal component
+analysis by hand.
+
+For the tone-mapping exercises, the ``seed`` draws numbers that work out by hand: whole
 data ranges, values that fall on fifths or quarters of a colour-map interval, colour components in
 steps of 0.2.
 
