@@ -75,3 +75,12 @@ __all__ = [
     "rational_quadratic_conic",
     "uniform_knots",
 ]
+
+# continuity and curvature, the matrix form of cubics, interpolating curves (each module
+# declares its __all__)
+from . import continuity, interpolating, matrix_form  # noqa: E402
+from .continuity import *  # noqa: E402,F401,F403
+from .matrix_form import *  # noqa: E402,F401,F403
+from .interpolating import *  # noqa: E402,F401,F403
+
+__all__ = sorted(__all__ + continuity.__all__ + matrix_form.__all__ + interpolating.__all__)

@@ -148,3 +148,16 @@ __all__ = [
     "torus",
     "vertex_quadrics",
 ]
+
+# the forms of a model and boundary representations; clustering, vertex decimation, error
+# measures; levels of detail and progressive meshes (each module declares its __all__)
+from . import brep, clustering, decimation, distances, forms, lod  # noqa: E402
+from .forms import *  # noqa: E402,F401,F403
+from .brep import *  # noqa: E402,F401,F403
+from .clustering import *  # noqa: E402,F401,F403
+from .decimation import *  # noqa: E402,F401,F403
+from .distances import *  # noqa: E402,F401,F403
+from .lod import *  # noqa: E402,F401,F403
+
+__all__ = sorted(__all__ + forms.__all__ + brep.__all__ + clustering.__all__
+                 + decimation.__all__ + distances.__all__ + lod.__all__)

@@ -1,0 +1,3 @@
+"""continuity (being written)."""
+
+__all__ = []

@@ -1,0 +1,3 @@
+"""interpolating (being written)."""
+
+__all__ = []

@@ -1,0 +1,3 @@
+"""matrix_form (being written)."""
+
+__all__ = []

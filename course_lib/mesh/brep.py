@@ -1,0 +1,3 @@
+"""brep (being written)."""
+
+__all__ = []

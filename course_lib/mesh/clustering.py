@@ -1,0 +1,3 @@
+"""clustering (being written)."""
+
+__all__ = []

@@ -1,0 +1,3 @@
+"""decimation (being written)."""
+
+__all__ = []

@@ -1,0 +1,3 @@
+"""distances (being written)."""
+
+__all__ = []

@@ -1,0 +1,3 @@
+"""forms (being written)."""
+
+__all__ = []

@@ -1,0 +1,3 @@
+"""lod (being written)."""
+
+__all__ = []
