@@ -9,7 +9,10 @@ records typed out from the face lists, the one-ring ordered by angle around the 
 direction, point-to-plane distances and a least-squares solve (numpy.linalg.lstsq) for the
 quadric error metric; never with the course_lib function the checker calls.
 """
+import importlib
 import math
+import types
+from pathlib import Path
 from collections import Counter
 
 import networkx as nx
@@ -388,7 +391,13 @@ GARBAGE = {"numbers": NUMBERS_GARBAGE, "number": NUMBER_GARBAGE, "index": INDEX_
 DISCRETE = {"name", "index", "record", "ring"}
 
 
-exercises = harness.variants(ch06)
+#: The chapter's exercises may be split over topic files: this one tests those in SPECS,
+#: tests/test_exercises_ch06_*.py the others, and test_every_exercise_is_tested_in_one_file
+#: holds the union to the chapter's list.
+TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch06.EXERCISES
+                                              if cls.__name__ in SPECS),
+                              **{name: getattr(ch06, name) for name in SPECS})
+exercises = harness.variants(TOPIC)
 
 
 def as_answer(value, form):
@@ -407,7 +416,7 @@ def same(a, b, form):
 # Tests
 # ---------------------------------------------------------------------------------------------
 
-globals().update(harness.common_tests(ch06, SPECS, GARBAGE, exercises, at_least=10, newlines=None))
+globals().update(harness.common_tests(TOPIC, SPECS, GARBAGE, exercises, at_least=10, newlines=None))
 test_mistakes_are_diagnosed = harness.mistakes_test(
     SPECS, exercises, same, as_answer=as_answer,
     key_seeds=SEEDS)
@@ -590,3 +599,13 @@ def test_seeds_give_many_different_answers(name):
     cls = getattr(ch06, name)
     answers = {harness.answer_key(cls(seed=seed).expected) for seed in range(300)}
     assert len(answers) >= FEWEST_ANSWERS.get(name, 30), (name, len(answers))
+
+
+def test_every_exercise_is_tested_in_one_file():
+    """Together the chapter's exercise test files test every exercise of ``ch06.EXERCISES``,
+    each in exactly one file."""
+    tested = list(SPECS)
+    for path in sorted(Path(__file__).parent.glob("test_exercises_ch06_*.py")):
+        tested += list(importlib.import_module(path.stem).SPECS)
+    assert sorted(tested) == sorted(cls.__name__ for cls in ch06.EXERCISES)
+    assert len(ch06.EXERCISES) >= 10
