@@ -424,22 +424,25 @@ def thomas_solve(sub, diag, sup, rhs):
                              f"shape {v.shape}")
     if r.ndim not in (1, 2) or len(r) != n:
         raise ValueError(f"rhs must have {n} rows (one per equation), got shape {r.shape}")
-    cp = np.empty(n)
-    dp = np.empty_like(r)
-    pivot = b[0]
+    # the recurrences run on Python floats: indexing numpy scalars one by one is ~10x slower
+    a, b, c = a.tolist(), b.tolist(), c.tolist()
+    cp, pivots = [0.0] * n, [0.0] * n
     for i in range(n):
-        if i:
-            pivot = b[i] - a[i] * cp[i - 1]
+        pivot = b[i] - (a[i] * cp[i - 1] if i else 0.0)
         if pivot == 0:
             raise ValueError(f"the system is singular at row {i} (zero pivot): diag must "
                              "dominate sub and sup")
+        pivots[i] = pivot
         cp[i] = c[i] / pivot
-        dp[i] = (r[i] - (a[i] * dp[i - 1] if i else 0.0)) / pivot
-    x = np.empty_like(dp)
-    x[-1] = dp[-1]
-    for i in range(n - 2, -1, -1):
-        x[i] = dp[i] - cp[i] * x[i + 1]
-    return x
+    columns = r.reshape(n, -1).T.tolist()
+    for col in columns:                               # forward sweep, then back substitution
+        previous = 0.0
+        for i in range(n):
+            previous = col[i] = (col[i] - a[i] * previous) / pivots[i] if i else \
+                col[i] / pivots[i]
+        for i in range(n - 2, -1, -1):
+            col[i] -= cp[i] * col[i + 1]
+    return np.array(columns).T.reshape(r.shape)
 
 
 def spline_tangents(points, params="uniform", end="natural", end_tangents=None,
