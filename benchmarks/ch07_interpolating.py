@@ -25,6 +25,10 @@ def operations(quick=False):
                       count, lambda: ip.cubic_spline(points, t, nodes, "natural"),
                       lambda: CubicSpline(nodes, points, bc_type="natural")(t),
                       "scipy CubicSpline (natural)", repeat),
+        operation_row(f"not-a-knot cubic spline through {count:,} points, fit + {count:,} "
+                      "samples", count, lambda: ip.cubic_spline(points, t, nodes, "not-a-knot"),
+                      lambda: CubicSpline(nodes, points, bc_type="not-a-knot")(t),
+                      "scipy CubicSpline (not-a-knot)", repeat),
         operation_row(f"piecewise Hermite curve, {count:,} points, {count:,} samples", count,
                       lambda: ip.hermite_curve(points, tangents, t, nodes),
                       lambda: CubicHermiteSpline(nodes, points, tangents)(t),

@@ -95,6 +95,19 @@ def test_clamped_spline_matches_scipy_and_make_interp_spline():
     assert np.allclose(ours, bsp(t))
 
 
+@pytest.mark.parametrize("kind", ["uniform", "chord", "centripetal"])
+@pytest.mark.parametrize("count", [4, 5, 6])
+def test_not_a_knot_spline_matches_scipy(kind, count):
+    pts = POINTS[:count]
+    nodes = ip.parameterize(pts, kind)
+    t = np.linspace(nodes[0], nodes[-1], 151)
+    ref = si.CubicSpline(nodes, pts, bc_type="not-a-knot")
+    assert np.allclose(ip.cubic_spline(pts, t, kind, "not-a-knot"), ref(t))
+    a, b = ip.spline_system(pts, kind, "not-a-knot")
+    assert np.allclose(a @ ref(nodes, 2), b)                  # scipy's M solve our system
+    assert np.count_nonzero(a[0]) == 3                        # not tridiagonal
+
+
 def test_spline_system_by_hand_and_dense_solution():
     # 3 points, uniform: natural rows M0 = 0, M2 = 0; middle 1*M0 + 4*M1 + 1*M2 = 6*(-1 - 1)
     a, b = ip.spline_system([[0.0], [1.0], [0.0]])
@@ -166,6 +179,7 @@ def test_passes_through_tells_interpolation_from_approximation():
     (lambda: ip.parameterize([[0, 0], [1, 1]], "arc"), "kind must be one of"),
     (lambda: ip.cubic_spline([[0, 0], [1, 1], [1, 1]], 0.5), "points must not repeat"),
     (lambda: ip.cubic_spline([[0, 0], [1, 1]], 0.5, end="natural"), "at least 3"),
+    (lambda: ip.cubic_spline([[0, 0], [1, 1], [2, 0]], 0.5, end="not-a-knot"), "at least 4"),
     (lambda: ip.cubic_spline([[0, 0], [1, 1], [2, 0]], 0.5, [0, 2, 1]), "strictly increasing"),
     (lambda: ip.cubic_spline([[0, 0], [1, 1], [2, 0]], 0.5, [0, 1]), "one parameter value"),
     (lambda: ip.cubic_spline([[0, 0], [1, np.nan], [2, 0]], 0.5), "points must be finite"),

@@ -12,7 +12,7 @@ values :math:`t_0 < t_1 < \dots < t_n` (the *parameterisation*, see :func:`param
 * :func:`spline_system`, :func:`thomas_solve`, :func:`spline_tangents`, :func:`cubic_spline`:
   the C2 cubic spline through the points; the second derivatives solve a tridiagonal system whose
   first and last rows are the *end conditions* (natural: zero second derivative; clamped: given
-  end tangents).
+  end tangents; not-a-knot: the first two and the last two segments are single cubics).
 * :func:`cardinal_tangents`, :func:`catmull_rom`: the tangents are estimated locally from the
   neighbours (no system to solve); Catmull-Rom is the cardinal spline with ``tension = 0.5``.
 * :func:`passes_through`: does a curve interpolate its points?
@@ -52,7 +52,8 @@ __all__ = [
 ]
 
 PARAMETERIZATIONS = ("uniform", "chord", "centripetal")
-_END_CONDITIONS = ("natural", "clamped")
+_END_CONDITIONS = ("natural", "clamped", "not-a-knot")
+_MINIMUM_POINTS = {"natural": 3, "clamped": 2, "not-a-knot": 4}
 _EXPONENT = {"uniform": 0.0, "centripetal": 0.5, "chord": 1.0}
 
 
@@ -326,7 +327,7 @@ def _spline_diagonals(p, nodes, end, end_tangents):
     rhs = np.zeros_like(p)
     sub[1:-1], diag[1:-1], sup[1:-1] = h[:-1], 2.0 * (h[:-1] + h[1:]), h[1:]
     rhs[1:-1] = 6.0 * (slope[1:] - slope[:-1])
-    if end == "natural":
+    if end != "clamped":                 # natural; not-a-knot's rows are not tridiagonal
         diag[0] = diag[-1] = 1.0
     else:
         d0, dn = end_tangents
@@ -335,10 +336,39 @@ def _spline_diagonals(p, nodes, end, end_tangents):
     return sub, diag, sup, rhs
 
 
+def _not_a_knot_rows(nodes):
+    """The end rows of not-a-knot (third derivative continuous at t_1 and t_{n-1})."""
+    h = np.diff(nodes)
+    n = len(nodes)
+    first, last = np.zeros(n), np.zeros(n)
+    first[:3] = h[1], -(h[0] + h[1]), h[0]
+    last[-3:] = h[-1], -(h[-2] + h[-1]), h[-2]
+    return first, last
+
+
+def _not_a_knot_moments(p, nodes):
+    """Second derivatives with not-a-knot ends: M_0 and M_n eliminated from rows 1 and n - 1
+    (which stay diagonally dominant), the inner tridiagonal system solved by Thomas, the ends
+    recovered from the not-a-knot rows."""
+    h = np.diff(nodes)
+    sub, diag, sup, rhs = _spline_diagonals(p, nodes, "natural", None)
+    sub, diag, sup, rhs = sub[1:-1].copy(), diag[1:-1].copy(), sup[1:-1].copy(), rhs[1:-1]
+    # row 0: M_0 = ((h0 + h1) M_1 - h0 M_2) / h1, substituted into row 1
+    diag[0] += h[0] * (h[0] + h[1]) / h[1]
+    sup[0] -= h[0] ** 2 / h[1]
+    # row n: M_n = ((h_{n-2} + h_{n-1}) M_{n-1} - h_{n-1} M_{n-2}) / h_{n-2}, into row n - 1
+    diag[-1] += h[-1] * (h[-2] + h[-1]) / h[-2]
+    sub[-1] -= h[-1] ** 2 / h[-2]
+    inner = thomas_solve(sub, diag, sup, rhs)
+    m0 = ((h[0] + h[1]) * inner[0] - h[0] * inner[1]) / h[1]
+    mn = ((h[-2] + h[-1]) * inner[-1] - h[-1] * inner[-2]) / h[-2]
+    return np.vstack([m0, inner, mn])
+
+
 def _spline_input(points, params, end, end_tangents):
-    p = _control_points(points, "points", minimum=3 if end == "natural" else 2)
-    nodes = _knots(params, p)
     end = as_choice(end, "end", _END_CONDITIONS)
+    p = _control_points(points, "points", minimum=_MINIMUM_POINTS[end])
+    nodes = _knots(params, p)
     if end == "clamped":
         if end_tangents is None:
             raise ValueError("end_tangents must be given for end='clamped': a pair (T_0, T_n) "
@@ -349,8 +379,8 @@ def _spline_input(points, params, end, end_tangents):
                              f"(2, {p.shape[1]}), got shape {e.shape}")
         end_tangents = e
     elif end_tangents is not None:
-        raise ValueError("end_tangents is only used with end='clamped' (a natural spline has "
-                         "zero second derivatives at its ends instead)")
+        raise ValueError(f"end_tangents is only used with end='clamped' (a {end} spline "
+                         "sets its ends by another condition)")
     return p, nodes, end, end_tangents
 
 
@@ -364,14 +394,19 @@ def spline_system(points, params="uniform", end="natural", end_tangents=None):
 
     End rows: natural :math:`M_0 = 0`, :math:`M_n = 0`; clamped with end tangents
     :math:`T_0, T_n`: :math:`2 h_0 M_0 + h_0 M_1 = 6 ((P_1 - P_0)/h_0 - T_0)` and
-    :math:`h_{n-1} M_{n-1} + 2 h_{n-1} M_n = 6 (T_n - (P_n - P_{n-1})/h_{n-1})`.
+    :math:`h_{n-1} M_{n-1} + 2 h_{n-1} M_n = 6 (T_n - (P_n - P_{n-1})/h_{n-1})`;
+    not-a-knot (the third derivative is continuous at :math:`t_1` and :math:`t_{n-1}`, so the
+    first two and the last two segments are one cubic each):
+    :math:`h_1 M_0 - (h_0 + h_1) M_1 + h_0 M_2 = 0` and the mirror row at the end. These two
+    rows have three entries: that matrix is not tridiagonal (:func:`spline_tangents` eliminates
+    :math:`M_0` and :math:`M_n` first and solves the tridiagonal rest).
 
     Parameters
     ----------
     points : array_like, shape (n + 1, d)
-        At least 3 for a natural spline, 2 for a clamped one.
+        At least 3 for a natural spline, 2 for a clamped one, 4 for not-a-knot.
     params : {"uniform", "chord", "centripetal"} or array_like, shape (n + 1,)
-    end : {"natural", "clamped"}
+    end : {"natural", "clamped", "not-a-knot"}
     end_tangents : array_like, shape (2, d), optional
         :math:`T_0` and :math:`T_n`, only (and always) for ``end="clamped"``.
 
@@ -390,6 +425,8 @@ def spline_system(points, params="uniform", end="natural", end_tangents=None):
     p, nodes, end, e = _spline_input(points, params, end, end_tangents)
     sub, diag, sup, rhs = _spline_diagonals(p, nodes, end, e)
     a = np.diag(diag) + np.diag(sub[1:], -1) + np.diag(sup[:-1], 1)
+    if end == "not-a-knot":
+        a[0], a[-1] = _not_a_knot_rows(nodes)
     return a, rhs
 
 
@@ -473,8 +510,10 @@ def spline_tangents(points, params="uniform", end="natural", end_tangents=None,
     [0.0, -3.0, 0.0]
     """
     p, nodes, end, e = _spline_input(points, params, end, end_tangents)
-    sub, diag, sup, rhs = _spline_diagonals(p, nodes, end, e)
-    m = thomas_solve(sub, diag, sup, rhs)
+    if end == "not-a-knot":
+        m = _not_a_knot_moments(p, nodes)
+    else:
+        m = thomas_solve(*_spline_diagonals(p, nodes, end, e))
     if second:
         return m
     h = np.diff(nodes)[:, None]
