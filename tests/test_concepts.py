@@ -1066,3 +1066,31 @@ def test_fact_ch10_data():
     outside = np.array([[2.0, 2.0], [-1.0, 0.5]])
     assert Delaunay(p).find_simplex(outside).tolist() == [-1, -1]
     assert np.isnan(griddata(p, f, outside, "linear")).all()
+
+
+def test_fact_ch07_interpolating():
+    from scipy.interpolate import BarycentricInterpolator, CubicSpline
+    assert not truth("ch07-interp-runge")
+    f = lambda x: 1 / (1 + 25 * x ** 2)                               # noqa: E731
+    x = np.linspace(-1, 1, 2001)
+    errors = [np.abs(BarycentricInterpolator(np.linspace(-1, 1, n), f(np.linspace(-1, 1, n)))(x)
+                     - f(x)).max() for n in (5, 11, 17)]
+    assert errors[0] < errors[1] < errors[2]
+    assert answer_text("ch07-interp-catmull-rom-tangent") == "$\\tfrac12 (P_{i+1} - P_{i-1})$"
+    assert answer_text("ch07-interp-spline-local").startswith("In general every segment")
+    t = np.arange(9.0)
+    y = RNG.normal(size=9)
+    y2 = y.copy()
+    y2[4] += 1.0
+    u = np.linspace(0, 8, 801)
+    moved = np.abs(CubicSpline(t, y2, bc_type="natural")(u)
+                   - CubicSpline(t, y, bc_type="natural")(u))
+    assert moved[u < 1].max() > 1e-4 and moved[u > 7].max() > 1e-4   # even the end segments
+    assert truth("ch07-interp-natural-end")
+    s = CubicSpline(t, y, bc_type="natural")
+    assert np.allclose(s([0, 8], 2), 0)
+    assert not truth("ch07-interp-chord-duplicate")
+    pts = np.array([[0, 0], [1, 1], [1, 1], [2, 0]], float)
+    steps = np.linalg.norm(np.diff(pts, axis=0), axis=1)
+    with pytest.raises(ValueError):
+        CubicSpline(np.r_[0, np.cumsum(steps)], pts)

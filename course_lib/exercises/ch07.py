@@ -36,6 +36,8 @@ from ._ch07.bsplines import (ActiveControlPoints, BSplinePoint, BasisSupport, Cl
 from ._ch07.rational import CircleArc, ConicType, RationalBezierPoint
 from ._ch07.patches import BezierSurfacePoint
 from ._ch07.properties import PROPERTY_MENU, CurveProperties
+from ._ch07.interpolating import (CatmullRomPoint, CatmullRomTangent, HermitePoint,
+                                  SplineSecondDerivatives)
 
 __all__ = [
     "EXERCISES",
@@ -56,6 +58,11 @@ __all__ = [
     "DeCasteljauPoint",
     "DegreeElevation",
     "RationalBezierPoint",
+    # interpolating curves
+    "CatmullRomPoint",
+    "CatmullRomTangent",
+    "HermitePoint",
+    "SplineSecondDerivatives",
 ]
 
 #: The exercises of chapter 7, in the order of the solutions notebook.
@@ -76,4 +83,9 @@ EXERCISES = (
     ConicType,
     BezierSurfacePoint,
     CurveProperties,
+    # interpolating curves
+    HermitePoint,
+    CatmullRomTangent,
+    CatmullRomPoint,
+    SplineSecondDerivatives,
 )

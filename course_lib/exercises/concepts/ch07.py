@@ -123,4 +123,52 @@ QUESTIONS = [
         "They keep the convex hull, end-point (corner) interpolation and affine invariance, but "
         "no variation-diminishing property is known for them.",
         "Right: it is the property the curves have and the surfaces lack."),
+    # --- interpolating curves (textbook 7.5) ---
+    _tf(7, "ch07-interp-runge",
+        "Interpolating more and more equally spaced samples of a smooth function with one "
+        "polynomial through all of them always brings the polynomial closer to the function.",
+        False,
+        "Not always: for $1/(1 + 25x^2)$ on $[-1, 1]$ the error near the ends grows with the "
+        "degree (Runge's phenomenon). The polynomial must pass through every sample and swings "
+        "in between; piecewise cubics (splines) avoid it.",
+        "Right: it is false, and the counter-example is Runge's function, whose equispaced "
+        "interpolants oscillate more and more near the ends."),
+    _mc(7, "ch07-interp-catmull-rom-tangent",
+        "A Catmull-Rom spline with uniform parameters has, at an inner point $P_i$, the "
+        "tangent:",
+        ("$P_{i+1} - P_i$", "That is the forward difference: it ignores $P_{i-1}$ and gives "
+         "a tangent parallel to one edge only."),
+        ("$\\tfrac12 (P_{i+1} - P_{i-1})$", "The central difference of the two neighbours "
+         "(two parameter steps apart, hence the half): the curve at $P_i$ runs parallel to the "
+         "chord of its neighbours."),
+        ("$P_{i+1} - P_{i-1}$", "Twice too long: the two neighbours are two parameter steps "
+         "apart."),
+        ("$0$", "Zero tangents give a cardinal spline with tension $s = 0$, not Catmull-Rom."),
+        correct=1),
+    _mc(7, "ch07-interp-spline-local",
+        "You move one data point of a **natural cubic spline** (C2, through all the points). "
+        "Which part of the curve changes?",
+        ("Only the two segments next to the point", "That is true of Catmull-Rom (local "
+         "tangents), not of the C2 spline."),
+        ("Only the four nearest segments", "The influence decays away from the point, but it "
+         "never becomes exactly zero."),
+        ("In general every segment", "The tangents solve one tridiagonal system whose inverse "
+         "is full: every second derivative depends on every point (the influence decays fast, "
+         "but is not zero). C2 and locality cannot both be had with interpolating cubics."),
+        ("None: a spline only approximates its points", "A cubic spline through the points "
+         "interpolates them: the moved point is on the new curve."),
+        correct=2),
+    _tf(7, "ch07-interp-natural-end",
+        "A natural cubic spline has zero second derivative at both of its end points.", True,
+        "That is the definition of the natural end condition: $M_0 = M_n = 0$ closes the "
+        "system (the curve leaves its ends straight, like a flexible ruler let loose).",
+        "It is true: the natural end rows are $M_0 = 0$ and $M_n = 0$; the clamped ends give "
+        "the end tangents instead."),
+    _tf(7, "ch07-interp-chord-duplicate",
+        "Chord-length parameterisation works even when two consecutive data points "
+        "coincide.", False,
+        "A repeated point gives a parameter step of length 0: two parameter values are equal "
+        "and the spline's system divides by $h_i = 0$. Remove duplicates first.",
+        "Right: equal consecutive points make $t_i = t_{i+1}$, which an interpolating spline "
+        "cannot handle."),
 ]
