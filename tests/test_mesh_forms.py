@@ -93,7 +93,9 @@ def test_voxel_volume_and_memory():
 def test_voxels_to_mesh_against_scikit_image():
     values, _, spacing, origin = F.voxelize(F.implicit_sphere, (-1.3,) * 3, (1.3,) * 3, 24)
     v, t = F.voxels_to_mesh(values, spacing, origin)
-    ours = trimesh.Trimesh(v, t, process=False).area
+    tm = trimesh.Trimesh(v, t, process=False)
+    ours = tm.area
+    assert tm.is_winding_consistent and abs(tm.volume - 4 / 3 * np.pi) < 0.05 * 4 / 3 * np.pi
     sv, st, _, _ = measure.marching_cubes(values, 0.0, spacing=tuple(spacing[::-1]))
     theirs = measure.mesh_surface_area(sv, st)
     assert abs(ours - theirs) < 1e-6 * theirs

@@ -408,6 +408,9 @@ def voxels_to_mesh(values, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0), leve
     -------
     vertices : ndarray, shape (n, 3)
     triangles : ndarray of int, shape (m, 3)
+        Counter-clockwise seen from outside (from where the values exceed ``level``), so the
+        normals point out of the solid, as for the other meshes of :mod:`course_lib.mesh`
+        (marching cubes itself winds them the other way round).
 
     Examples
     --------
@@ -418,7 +421,7 @@ def voxels_to_mesh(values, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0), leve
     """
     from ..scivis import marching_cubes
     out = marching_cubes(values, level, spacing=spacing, origin=origin)
-    return out[0], out[1]
+    return out[0], np.ascontiguousarray(out[1][:, ::-1])
 
 
 # ---------------------------------------------------------------------------------------------

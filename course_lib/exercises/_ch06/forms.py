@@ -176,7 +176,7 @@ class BRepEulerRings(DrawnExercise):
 FORM_NAMES = ("mesh", "implicit", "parametric", "csg", "voxels", "point cloud", "brep")
 
 #: Each need: the right form, and why the plausible wrong forms fail it.
-_NEEDS = {
+_FORM_NEEDS = {
     "realtime": ("mesh", {
         "implicit": "a GPU rasterizes triangles; an implicit surface must first be found by "
                     "ray marching or polygonized every frame, far too slow on a phone",
@@ -287,7 +287,7 @@ class ChooseModelForm(DrawnExercise):
 
     def draw(self, rng):
         self.need, self.task = _SCENARIOS[int(rng.integers(len(_SCENARIOS)))]
-        right, wrong = _NEEDS[self.need]
+        right, wrong = _FORM_NEEDS[self.need]
         names = sorted(wrong)
         chosen = rng.choice(len(names), size=3, replace=False)
         menu = [right] + [names[int(k)] for k in chosen]
@@ -312,7 +312,7 @@ class ChooseModelForm(DrawnExercise):
                 "parametric patch": "parametric"}.get(name, name)
         if name not in self.menu:
             return Feedback("invalid", f"{answer!r} is not on the menu. " + form, "unreadable")
-        right, wrong = _NEEDS[self.need]
+        right, wrong = _FORM_NEEDS[self.need]
         if name == right:
             return Feedback("correct", f"Yes: a {right} fits {self.task}.")
         return Feedback("wrong", f"Not a {name}: {wrong[name]}.", f"said {name}")
@@ -328,7 +328,7 @@ class ChooseModelForm(DrawnExercise):
         ]
 
     def worked(self):
-        right, wrong = _NEEDS[self.need]
+        right, wrong = _FORM_NEEDS[self.need]
         steps = [f"The task: {self.task}."]
         for name in self.menu:
             if name != right:
