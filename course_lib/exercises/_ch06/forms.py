@@ -33,11 +33,11 @@ class BRepEulerRings(DrawnExercise):
 
     Examples
     --------
-    >>> ex = BRepEulerRings(seed=1)
+    >>> ex = BRepEulerRings(seed=2)
     >>> ex.check(ex.expected).status
     'correct'
     >>> ex.ask, ex.R                                             # the rings as boundary loops
-    ('E', 5)
+    ('E', 2)
     >>> ex.check(ex.V + ex.F + ex.R - 2 * (ex.S - ex.H)).diagnosis
     'rings as boundary loops'
     """
