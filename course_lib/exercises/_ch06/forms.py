@@ -9,12 +9,13 @@ from . import _paren
 
 __all__ = ["BRepEulerRings", "ChooseModelForm"]
 
-#: What one feature adds to the counts (V, E, F, R, S, H) of a solid, for a p-sided prism.
+#: The words for the prismatic holes and pockets, by their number of sides.
 _HOLE_NAMES = {3: "triangular", 4: "square", 6: "hexagonal"}
 
 
 def _feature_counts(p, through):
-    """What a p-sided hole (through) or pocket (blind) cut into one face adds to the counts."""
+    """What a p-sided hole (through) or pocket (blind) cut into one face adds to the counts
+    (V, E, F, R, S, H) of a solid."""
     if through:
         return (2 * p, 3 * p, p, 2, 0, 1)
     return (2 * p, 3 * p, p + 1, 1, 0, 0)
@@ -171,9 +172,6 @@ class BRepEulerRings(DrawnExercise):
 # ---------------------------------------------------------------------------------------------
 # Choosing the form of a model
 # ---------------------------------------------------------------------------------------------
-
-#: The forms a student may name.
-FORM_NAMES = ("mesh", "implicit", "parametric", "csg", "voxels", "point cloud", "brep")
 
 #: Each need: the right form, and why the plausible wrong forms fail it.
 _FORM_NEEDS = {
@@ -333,7 +331,7 @@ class ChooseModelForm(DrawnExercise):
         for name in self.menu:
             if name != right:
                 steps.append(f"Not a {name}: {wrong[name]}.")
-        steps.append(f"That leaves the {right}: {_WHY[self.need]}.")
+        steps.append(f"That leaves the {right}: {_FORM_WHY[self.need]}.")
         return Worked(steps, right)
 
     def statement(self):
@@ -343,7 +341,7 @@ class ChooseModelForm(DrawnExercise):
             r"**Answer:** one name, as a string." "\n\n" + data_note("task", "menu"))
 
 
-_WHY = {
+_FORM_WHY = {
     "realtime": "triangles are what the GPU rasterizes, with the detail where it is needed",
     "scan": "a scanner measures points on the surface (often with normals) and nothing else",
     "volume": "a grid stores a value in every cell, inside as well as on the surface",
