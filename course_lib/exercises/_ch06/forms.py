@@ -156,7 +156,7 @@ class BRepEulerRings(DrawnExercise):
                   3: " Next to it lie two more plain boxes, touching neither it nor each other."}
         if self.ask == "H":
             return (
-                r"A CAD kernel reports the counts of a solid made of boxes, some with "
+                r"A CAD kernel reports the counts of a solid made of one or more boxes, with "
                 rf"{shape} holes or pockets: $V = {self.V}$, $E = {self.E}$, $F = {self.F}$, "
                 rf"$R = {self.R}$ rings (inner loops) and $S = {self.S}$ shell(s). How many "
                 r"through-holes $H$ does it have?" "\n\n"
