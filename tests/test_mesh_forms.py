@@ -139,6 +139,24 @@ def test_tessellated_torus_is_closed_with_genus_one_and_converges():
         F.tessellate(None, 2, 2)
 
 
+def test_tessellated_bezier_patch_against_the_bernstein_sum():
+    from scipy.special import comb
+    from course_lib import surfaces
+
+    grid = surfaces.hill_grid(4, 3)
+    v, t = F.tessellate(lambda u, w: surfaces.bezier_surface(grid, u[:, 0], w[0]), 5, 4)
+    m, n = grid.shape[0] - 1, grid.shape[1] - 1
+    expected = []
+    for u in np.arange(6) / 5:                     # vertex i * 5 + j is (u_i, v_j)
+        for w in np.arange(5) / 4:
+            bu = [comb(m, i) * u ** i * (1 - u) ** (m - i) for i in range(m + 1)]
+            bw = [comb(n, j) * w ** j * (1 - w) ** (n - j) for j in range(n + 1)]
+            expected.append(np.einsum("i,j,ijk->k", bu, bw, grid))
+    assert np.allclose(v, expected)
+    assert t.shape == (2 * 5 * 4, 3)
+    assert trimesh.Trimesh(v, t, process=False).is_winding_consistent
+
+
 def test_model_forms_table():
     assert set(F.MODEL_FORMS) == {"mesh", "implicit", "parametric", "csg", "voxels",
                                   "point cloud", "brep"}

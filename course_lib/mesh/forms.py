@@ -501,7 +501,9 @@ def tessellate(evaluate, nu, nv, wrap_u=False, wrap_v=False):
     Parameters
     ----------
     evaluate : callable
-        ``evaluate(u, v)`` gives points of shape (..., 3) for arrays u, v.
+        ``evaluate(u, v)`` gives points of shape (..., 3) for arrays u, v of the same shape
+        (the grid, ``indexing="ij"``). A tensor-product patch of :mod:`course_lib.surfaces`
+        takes the two axes: ``lambda u, v: bezier_surface(grid, u[:, 0], v[0])``.
     nu, nv : int >= 1
         The numbers of cells along u and v.
     wrap_u, wrap_v : bool
