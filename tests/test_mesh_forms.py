@@ -225,3 +225,18 @@ def test_brep_bad_input():
         B.brep_pocket_cube(3.0)
     with pytest.raises(TypeError, match="BRep"):
         B.brep_counts("cube")
+
+
+def test_example_solids_refuse_bad_sizes():
+    with pytest.raises(TypeError, match="size"):
+        B.brep_cube("a")
+    with pytest.raises(ValueError, match="gap"):
+        B.brep_two_cubes(0)
+    with pytest.raises(ValueError, match="depth"):
+        B.brep_pocket_cube(-1)
+    with pytest.raises(TypeError, match="tolerance"):
+        F.classify_points([0.0], "x")
+    with pytest.raises(ValueError, match="minor"):
+        F.implicit_torus([0, 0, 0], 1.0, 1.0)
+    with pytest.raises(ValueError, match="half"):
+        F.implicit_box([0, 0, 0], half=(1, 0, 1))

@@ -33,7 +33,7 @@ two separate cubes       16   24   12   0    2    0    4 = 2(2 - 0)
 
 import numpy as np
 
-from .._validate import as_whole
+from .._validate import as_positive, as_whole
 from ._common import _vertices
 
 __all__ = ["BRep", "brep_counts", "brep_cube", "brep_drilled_cube", "brep_pocket_cube",
@@ -282,9 +282,7 @@ def brep_cube(size=1.0):
     >>> brep_counts(brep_cube())
     {'V': 8, 'E': 12, 'F': 6, 'R': 0, 'S': 1, 'H': 0}
     """
-    s = float(size)
-    if not np.isfinite(s) or s <= 0:
-        raise ValueError(f"size must be a positive number, got {size!r}")
+    s = as_positive(size, "size")
     v, faces = _box_loops(np.zeros(3), np.full(3, s))
     return BRep(v, faces)
 
@@ -348,8 +346,8 @@ def brep_pocket_cube(depth=2.0):
     >>> brep_counts(brep_pocket_cube())
     {'V': 16, 'E': 24, 'F': 11, 'R': 1, 'S': 1, 'H': 0}
     """
-    d = float(depth)
-    if not (0 < d < 3):
+    d = as_positive(depth, "depth")
+    if d >= 3:
         raise ValueError(f"depth must be between 0 and 3 (exclusive; 3 is a through-hole), "
                          f"got {depth!r}")
     v, faces = _drilled(d)
@@ -364,10 +362,7 @@ def brep_two_cubes(gap=1.0):
     >>> brep_counts(brep_two_cubes())
     {'V': 16, 'E': 24, 'F': 12, 'R': 0, 'S': 2, 'H': 0}
     """
-    g = float(gap)
-    if not np.isfinite(g) or g <= 0:
-        raise ValueError(f"gap must be a positive number (the cubes must not touch), "
-                         f"got {gap!r}")
+    g = as_positive(gap, "gap", "the cubes must not touch")
     v1, f1 = _box_loops(np.zeros(3), np.ones(3))
     v2, f2 = _box_loops(np.array([1 + g, 0, 0]), np.array([2 + g, 1, 1]), first=8)
     return BRep(np.vstack([v1, v2]), f1 + f2)

@@ -33,7 +33,7 @@ sums up the properties.
 
 import numpy as np
 
-from .._validate import as_array, as_choice, as_points, as_positive, as_rng, as_whole
+from .._validate import as_array, as_choice, as_points, as_positive, as_rng, as_scalar, as_whole
 from ._common import _vertices, _face_table
 
 __all__ = ["FORM_PROPERTIES", "MODEL_FORMS", "classify_points", "csg_difference",
@@ -316,8 +316,8 @@ def classify_points(values, tolerance=1e-9):
     [-1, 0, 1]
     """
     v = as_array(values, "values")
-    tol = float(tolerance)
-    if not np.isfinite(tol) or tol < 0:
+    tol = as_scalar(tolerance, "tolerance")
+    if tol < 0:
         raise ValueError(f"tolerance must be a finite number >= 0, got {tolerance!r}")
     return np.where(np.abs(v) <= tol, 0, np.sign(v)).astype(np.int64)
 
