@@ -1094,3 +1094,19 @@ def test_fact_ch07_interpolating():
     steps = np.linalg.norm(np.diff(pts, axis=0), axis=1)
     with pytest.raises(ValueError):
         CubicSpline(np.r_[0, np.cumsum(steps)], pts)
+
+
+def test_fact_ch06_forms_and_rings():
+    import trimesh
+    from course_lib.mesh import brep
+    assert answer_text("ch06-brep-euler-rings") == "$R = 2$, $H = 1$"
+    assert truth("ch06-pocket-no-hole") and not truth("ch06-voxel-memory")
+    assert "implicit" in answer_text("ch06-form-inside-test").lower()
+    for solid, rings, holes in ((brep.brep_drilled_cube(), 2, 1),
+                                (brep.brep_pocket_cube(), 1, 0)):
+        v, t = brep.brep_triangulate(solid)
+        mesh = trimesh.Trimesh(v, t, process=False)
+        assert solid.R == rings and mesh.euler_number == 2 - 2 * holes
+        assert solid.V - solid.E + solid.F - solid.R == 2 * (1 - holes)
+    assert 16 - 24 + 10 - 2 == 0 and 16 - 24 + 11 - 1 == 2
+    assert (2 * 64) ** 3 == 8 * 64 ** 3

@@ -65,3 +65,8 @@ EXERCISES = (
     CollapseCost,
     OptimalPosition,
 )
+
+# the forms of a model and B-reps with rings (course_lib/exercises/_ch06/forms.py)
+from ._ch06.forms import BRepEulerRings, ChooseModelForm  # noqa: E402
+__all__ += ["BRepEulerRings", "ChooseModelForm"]
+EXERCISES += (BRepEulerRings, ChooseModelForm)

@@ -84,4 +84,39 @@ QUESTIONS = [
         "closed.", True,
         "Inside and outside are only defined when the surface encloses a region.",
         "It is needed: an open surface does not separate inside from outside."),
+    # the forms of a model and boundary representations with rings
+    _mc(6, "ch06-brep-euler-rings",
+        "A block has one square hole drilled right through it. Its B-rep has $V = 16$, "
+        "$E = 24$, $F = 10$ and one shell. Which counts satisfy the Euler-Poincaré formula "
+        "$V - E + F - R = 2(S - H)$?",
+        ("$R = 0$, $H = 1$", "The hole leaves an inner loop (ring) in the top face and one "
+         "in the bottom face: $16 - 24 + 10 - 0 = 2 \\ne 0$."),
+        ("$R = 2$, $H = 1$", "Two rings (top and bottom mouth of the hole) and one "
+         "through-hole: $16 - 24 + 10 - 2 = 0 = 2(1 - 1)$."),
+        ("$R = 1$, $H = 1$", "A through-hole opens in two faces, so it makes two rings, "
+         "not one; and $16 - 24 + 10 - 1 = 1$ is odd, never $2(S - H)$."),
+        ("$R = 2$, $H = 0$", "With $H = 0$ the right side is 2, but the left side is 0: the "
+         "hole goes through, it is a handle."),
+        correct=1),
+    _tf(6, "ch06-pocket-no-hole",
+        "A blind pocket milled into the top face of a block adds a ring but no through-hole.",
+        True,
+        "The pocket's rim is an inner loop of the top face ($R = 1$), its floor closes it: the "
+        "block stays of genus 0, e.g. $16 - 24 + 11 - 1 = 2 = 2(1 - 0)$.",
+        "It does: the pocket has a floor, so nothing goes through; only the rim of its mouth "
+        "is a ring."),
+    _mc(6, "ch06-form-inside-test",
+        "For which form of a model is 'is this point inside the solid?' a single cheap "
+        "evaluation?",
+        ("A polygon mesh", "A mesh needs a ray cast that counts crossings with its triangles."),
+        ("A point cloud", "Points on a surface have no inside at all."),
+        ("A parametric patch", "A patch $p(u, v)$ is easy to evaluate but has no inside test: "
+         "the nearest point must be searched for."),
+        ("An implicit surface or a CSG tree of them", "The sign of $f(p)$ answers it; for CSG "
+         "union is min, intersection max, difference $\\max(a, -b)$ of the signed values."),
+        correct=3),
+    _tf(6, "ch06-voxel-memory",
+        "Doubling the resolution of a voxel grid doubles its memory.", False,
+        "It multiplies it by $2^3 = 8$: the grid has $n^3$ cells.",
+        "Right: $n^3$ cells, so twice the resolution costs 8 times the memory."),
 ]
