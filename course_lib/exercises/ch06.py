@@ -65,3 +65,9 @@ EXERCISES = (
     CollapseCost,
     OptimalPosition,
 )
+
+# level of detail: the screen-space error and progressive-mesh records
+from ._ch06.lod import LODChoice, SplitRecord  # noqa: E402
+
+__all__ += ["LODChoice", "SplitRecord"]
+EXERCISES = EXERCISES + (LODChoice, SplitRecord)
