@@ -273,6 +273,8 @@ class VertexSplit(NamedTuple):
         The vertex that splits (the collapse's ``kept``; original indexing).
     new_vertex : int
         The vertex it restores (the collapse's ``removed``).
+    collapsed_position : ndarray, shape (3,)
+        Where `vertex` sits before the split (the collapse's position).
     vertex_position : ndarray, shape (3,)
         Where `vertex` goes back to (it sat at the collapse position before).
     new_position : ndarray, shape (3,)
@@ -292,6 +294,7 @@ class VertexSplit(NamedTuple):
     """
     vertex: int
     new_vertex: int
+    collapsed_position: np.ndarray
     vertex_position: np.ndarray
     new_position: np.ndarray
     faces_added: tuple
@@ -359,10 +362,9 @@ class ProgressiveMesh:
             relinked.append(tuple(moved))
             old_pos.append(pos[c.kept].copy())
             pos[c.kept] = c.position
-        self.splits = [VertexSplit(c.kept, c.removed, p, record.vertices[c.removed].copy(),
-                                   tuple(c.faces_removed), r)
+        self.splits = [VertexSplit(c.kept, c.removed, np.asarray(c.position, dtype=float), p,
+                                   record.vertices[c.removed].copy(), tuple(c.faces_removed), r)
                        for c, p, r in zip(collapses[::-1], old_pos[::-1], relinked[::-1])]
-        self._collapse_pos = [np.asarray(c.position, dtype=float) for c in collapses[::-1]]
         self._corners, self._pos = corners, pos
         self._alive = np.ones(m, dtype=bool)
         for c in collapses:
@@ -409,7 +411,7 @@ class ProgressiveMesh:
             row = self._corners[f]
             row[row == s.new_vertex] = s.vertex
         self._alive[list(s.faces_added)] = False
-        self._pos[s.vertex] = self._collapse_pos[self.level]
+        self._pos[s.vertex] = s.collapsed_position
 
     def go_to(self, level):
         """Apply splits or collapses until `level` splits are applied."""
