@@ -53,14 +53,14 @@ __all__ = ["LODChain", "ProgressiveMesh", "VertexSplit", "lod_chain", "screen_sp
            "select_level", "switch_distances", "view_dependent_faces"]
 
 
-def _fov(fov):
+def _lod_fov(fov):
     f = as_scalar(fov, "fov")
     if not 0 < f < np.pi:
         raise ValueError(f"fov must be an angle in (0, pi) radians, got {fov!r}")
     return f
 
 
-def _positive_array(value, name):
+def _lod_positive(value, name):
     arr = as_array(value, name)
     if np.any(arr <= 0):
         raise ValueError(f"{name} must be > 0, got {arr.min() if arr.ndim else float(arr)!r}")
@@ -101,18 +101,18 @@ def screen_space_error(geometric_error, distance, fov, viewport_height):
     eps = as_array(geometric_error, "geometric_error")
     if np.any(eps < 0):
         raise ValueError("geometric_error must be >= 0")
-    d = _positive_array(distance, "distance")
-    f = _fov(fov)
+    d = _lod_positive(distance, "distance")
+    f = _lod_fov(fov)
     h = as_positive(viewport_height, "viewport_height")
     out = eps * (h / 2) / (d * np.tan(f / 2))
     return float(out) if np.ndim(out) == 0 else out
 
 
-def _tolerance(tolerance):
+def _lod_tolerance(tolerance):
     return as_positive(tolerance, "tolerance", "the pixel tolerance")
 
 
-def _errors(errors):
+def _lod_errors(errors):
     e = as_array(errors, "errors")
     if e.ndim != 1 or len(e) == 0:
         raise ValueError(f"errors must be a non-empty list of level errors, got shape {e.shape}")
@@ -141,10 +141,10 @@ def switch_distances(errors, fov, viewport_height, tolerance):
     >>> switch_distances([0.0, 0.01, 0.04], np.pi / 2, 1000, 1.0).round(6).tolist()
     [0.0, 5.0, 20.0]
     """
-    e = _errors(errors)
-    f = _fov(fov)
+    e = _lod_errors(errors)
+    f = _lod_fov(fov)
     h = as_positive(viewport_height, "viewport_height")
-    return e * h / (2 * _tolerance(tolerance) * np.tan(f / 2))
+    return e * h / (2 * _lod_tolerance(tolerance) * np.tan(f / 2))
 
 
 def select_level(errors, distance, fov, viewport_height, tolerance, current=None,
@@ -177,9 +177,9 @@ def select_level(errors, distance, fov, viewport_height, tolerance, current=None
     >>> select_level([0.0, 0.01, 0.04], 21.0, np.pi / 2, 1000, 1.0, current=1, hysteresis=0.2)
     1
     """
-    e = _errors(errors)
+    e = _lod_errors(errors)
     d = as_positive(distance, "distance")
-    tau = _tolerance(tolerance)
+    tau = _lod_tolerance(tolerance)
     h = as_scalar(hysteresis, "hysteresis")
     if not 0 <= h < 1:
         raise ValueError(f"hysteresis must be in [0, 1), got {hysteresis!r}")
@@ -535,9 +535,9 @@ def view_dependent_faces(pm, eye, fov, viewport_height, tolerance):
     if not isinstance(pm, ProgressiveMesh):
         raise TypeError(f"pm must be a ProgressiveMesh, got {type(pm).__name__}")
     eye = as_vector(eye, "eye", 3)
-    _fov(fov)
+    _lod_fov(fov)
     as_positive(viewport_height, "viewport_height")
-    tau = _tolerance(tolerance)
+    tau = _lod_tolerance(tolerance)
     rec = pm.record
     n, collapses = len(rec.vertices), rec.collapses
     total = n + len(collapses)

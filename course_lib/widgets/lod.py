@@ -72,7 +72,7 @@ class State:
     geomorph: bool = True
 
 
-def _polygons(v, f, distance):
+def _lod_polygons(v, f, distance):
     """Visible triangles (back faces culled), far to near, projected from the eye at
     (0, 0, distance) and scaled to a fixed size; their Lambert grey levels."""
     depth = distance - v[:, 2]
@@ -126,7 +126,7 @@ def scene(state):
                            alpha)
     else:
         v, f = chain.levels[level]
-    polygons, shade = _polygons(v, f, d)
+    polygons, shade = _lod_polygons(v, f, d)
     size = float(mesh.screen_space_error(2.3, d, FOV, HEIGHT))
     text = (f"Distance {d:g}: level {level} ({chain.face_counts[level]} faces), geometric error "
             f"{errors[level]:.4f}, screen-space error <b>{px[level]:.2f} px</b> ≤ τ = {tau:g} px"

@@ -25,7 +25,7 @@ _ERROR_PATTERNS = ((0, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1),
                    (0, 0.002, 0.006, 0.012, 0.03, 0.08, 0.2))
 
 
-def _coarsest(errors, limit):
+def _lod_coarsest(errors, limit):
     """The largest index i with errors[i] <= limit (errors non-decreasing, errors[0] = 0)."""
     return int(np.flatnonzero(np.asarray(errors) <= limit * (1 + 1e-12))[-1])
 
@@ -67,7 +67,7 @@ class LODChoice(DrawnExercise):
         self.height = int(pick(rng, (600, 720, 800, 900, 1000, 1080, 1200)))
         self.tolerance = float(pick(rng, (0.5, 1.0, 1.0, 2.0)))
         self.distance = float(pick(rng, np.arange(5, 105, 5)))
-        self.expected = _coarsest(self.errors, self._limit(2, math.tan(self._half())))
+        self.expected = _lod_coarsest(self.errors, self._limit(2, math.tan(self._half())))
 
     def _half(self):
         return math.radians(self.fov_deg) / 2
@@ -86,12 +86,12 @@ class LODChoice(DrawnExercise):
 
     def mistakes(self):
         found = [
-            Mistake(_coarsest(self.errors, self._limit(2, math.tan(2 * self._half()))),
+            Mistake(_lod_coarsest(self.errors, self._limit(2, math.tan(2 * self._half()))),
                     r"You used $\tan\theta$ of the whole field of view. The view volume's "
                     r"half-height at distance $d$ is $d\tan(\theta/2)$, and it covers **half** "
                     r"the viewport, $H/2$ pixels: the half-angle goes with the half-height.",
                     "tan of the full angle"),
-            Mistake(_coarsest(self.errors, self._limit(1, math.tan(self._half()))),
+            Mistake(_lod_coarsest(self.errors, self._limit(1, math.tan(self._half()))),
                     r"You mapped the half-height $d\tan(\theta/2)$ onto the full viewport "
                     r"height $H$. It covers only half of it, $H/2$ pixels: "
                     r"$\varepsilon_{screen} = \varepsilon\,(H/2)/(d\tan(\theta/2))$.",
