@@ -380,17 +380,40 @@ class ProgressiveMesh:
                 f"{self._counts[-1]} faces)")
 
     def face_counts(self):
-        """The face count after j splits, j = 0 .. len(self) (coarse to fine)."""
+        """The face count after j splits, j = 0 .. len(self) (coarse to fine).
+
+        Examples
+        --------
+        >>> from course_lib.mesh import icosphere
+        >>> ProgressiveMesh(*icosphere(1), base_faces=60).face_counts().tolist()
+        [60, 62, 64, 66, 68, 70, 72, 74, 76, 78, 80]
+        """
         return self._counts.copy()
 
     def level_for(self, n_faces):
         """The number of splits whose mesh matches :meth:`SimplificationRecord.steps_for`
-        (`n_faces`): the finest mesh with at most `n_faces` faces, or the base mesh."""
+        (`n_faces`): the finest mesh with at most `n_faces` faces, or the base mesh.
+
+        Examples
+        --------
+        >>> from course_lib.mesh import icosphere
+        >>> pm = ProgressiveMesh(*icosphere(1), base_faces=60)
+        >>> pm.level_for(80), pm.level_for(71), pm.level_for(10)
+        (10, 5, 0)
+        """
         n = as_whole(n_faces, "n_faces", 0, integer_type=True)
         return len(self) - self.record.steps_for(n)
 
     def split(self):
-        """Apply the next vertex split (one level finer)."""
+        """Apply the next vertex split (one level finer).
+
+        Examples
+        --------
+        >>> from course_lib.mesh import icosphere
+        >>> pm = ProgressiveMesh(*icosphere(1), base_faces=60)
+        >>> pm.split(); pm.level, len(pm.mesh(level=1)[1])
+        (1, 62)
+        """
         if self.level >= len(self):
             raise ValueError("the mesh is already at full resolution")
         s = self.splits[self.level]
@@ -402,7 +425,15 @@ class ProgressiveMesh:
         self.level += 1
 
     def collapse(self):
-        """Undo the last vertex split (one level coarser): an edge collapse."""
+        """Undo the last vertex split (one level coarser): an edge collapse.
+
+        Examples
+        --------
+        >>> from course_lib.mesh import icosphere
+        >>> pm = ProgressiveMesh(*icosphere(1), base_faces=60)
+        >>> pm.go_to(3); pm.collapse(); pm.level
+        2
+        """
         if self.level == 0:
             raise ValueError("the mesh is already the base mesh")
         self.level -= 1
@@ -414,7 +445,15 @@ class ProgressiveMesh:
         self._pos[s.vertex] = s.collapsed_position
 
     def go_to(self, level):
-        """Apply splits or collapses until `level` splits are applied."""
+        """Apply splits or collapses until `level` splits are applied.
+
+        Examples
+        --------
+        >>> from course_lib.mesh import icosphere
+        >>> pm = ProgressiveMesh(*icosphere(1), base_faces=60)
+        >>> pm.go_to(7); pm.go_to(2); pm.level
+        2
+        """
         level = as_whole(level, "level", 0, integer_type=True)
         if level > len(self):
             raise ValueError(f"level must be at most {len(self)}, got {level}")
@@ -431,6 +470,13 @@ class ProgressiveMesh:
         -------
         vertices : ndarray, shape (n', 3)
         faces : ndarray of int, shape (m', 3)
+
+        Examples
+        --------
+        >>> from course_lib.mesh import icosphere
+        >>> pm = ProgressiveMesh(*icosphere(1), base_faces=60)
+        >>> [len(pm.mesh(n)[1]) for n in (80, 61, 70)]
+        [80, 60, 70]
         """
         if (n_faces is None) == (level is None):
             raise ValueError("give exactly one of n_faces and level")
@@ -535,8 +581,8 @@ def view_dependent_faces(pm, eye, fov, viewport_height, tolerance):
     if not isinstance(pm, ProgressiveMesh):
         raise TypeError(f"pm must be a ProgressiveMesh, got {type(pm).__name__}")
     eye = as_vector(eye, "eye", 3)
-    _lod_fov(fov)
-    as_positive(viewport_height, "viewport_height")
+    fov = _lod_fov(fov)
+    height = as_positive(viewport_height, "viewport_height")
     tau = _lod_tolerance(tolerance)
     rec = pm.record
     n, collapses = len(rec.vertices), rec.collapses
@@ -554,8 +600,7 @@ def view_dependent_faces(pm, eye, fov, viewport_height, tolerance):
         err[me] = max(np.sqrt(max(c.cost, 0.0)), err[kids[0]], err[kids[1]])
         node[c.kept] = me
     dist = np.maximum(np.linalg.norm(pos - eye, axis=1), 1e-12)
-    expand = (err * (viewport_height / 2) / (dist * np.tan(fov / 2)) > tau) & (np.arange(total)
-                                                                               >= n)
+    expand = (err * (height / 2) / (dist * np.tan(fov / 2)) > tau) & (np.arange(total) >= n)
     active_rep = np.arange(total)
     opened = np.zeros(total, dtype=bool)          # every ancestor and the node itself expand
     for x in range(total - 1, -1, -1):            # parents come after their children
