@@ -1110,3 +1110,27 @@ def test_fact_ch06_forms_and_rings():
         assert solid.V - solid.E + solid.F - solid.R == 2 * (1 - holes)
     assert 16 - 24 + 10 - 2 == 0 and 16 - 24 + 11 - 1 == 2
     assert (2 * 64) ** 3 == 8 * 64 ** 3
+
+
+def test_fact_ch06_lod():
+    # the screen-space error: project two points eps apart at depth d with a perspective
+    # matrix typed here (OpenGL form) and a viewport H pixels high
+    eps, d, fov, H = 0.03, 7.0, np.radians(50), 900
+    f = 1 / np.tan(fov / 2)
+    P = np.array([[f, 0, 0, 0], [0, f, 0, 0], [0, 0, -1.01, -0.2], [0, 0, -1, 0]])
+    y = [(P @ [0, h, -d, 1])[1] / (P @ [0, h, -d, 1])[3] * H / 2 for h in (0.0, eps)]
+    assert answer_text("ch06-lod-screen-error") == "$\\varepsilon H / (2 d \\tan(\\theta/2))$"
+    assert np.isclose(y[1] - y[0], eps * H / (2 * d * np.tan(fov / 2)))
+    assert answer_text("ch06-lod-which-level").startswith("The coarsest level whose screen")
+    # a progressive mesh reproduces simplify_qem's meshes exactly
+    from course_lib.mesh import ProgressiveMesh, icosphere, simplify_qem
+    assert truth("ch06-lod-pm-exact") and truth("ch06-lod-hysteresis")
+    pm = ProgressiveMesh(*icosphere(2), base_faces=50)
+    for n in (50, 120, 250):
+        v, faces = pm.mesh(n)
+        v0, f0 = simplify_qem(*icosphere(2), target_faces=n)[:2]
+        assert np.array_equal(faces, f0) and np.allclose(v, v0)
+    assert answer_text("ch06-lod-geomorph").startswith("It moves each vertex")
+    g0, _ = pm.geomorph(120, 250, 0.0)
+    coarse, _ = pm.mesh(120)
+    assert np.allclose(np.linalg.norm(g0[:, None] - coarse[None], axis=2).min(axis=1), 0)

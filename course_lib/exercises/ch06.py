@@ -70,3 +70,8 @@ EXERCISES = (
 from ._ch06.forms import BRepEulerRings, ChooseModelForm  # noqa: E402
 __all__ += ["BRepEulerRings", "ChooseModelForm"]
 EXERCISES += (BRepEulerRings, ChooseModelForm)
+# level of detail: the screen-space error and progressive-mesh records
+from ._ch06.lod import LODChoice, SplitRecord  # noqa: E402
+
+__all__ += ["LODChoice", "SplitRecord"]
+EXERCISES = EXERCISES + (LODChoice, SplitRecord)

@@ -119,4 +119,56 @@ QUESTIONS = [
         "Doubling the resolution of a voxel grid doubles its memory.", False,
         "It multiplies it by $2^3 = 8$: the grid has $n^3$ cells.",
         "Right: $n^3$ cells, so twice the resolution costs 8 times the memory."),
+    _mc(6, "ch06-lod-screen-error",
+        "An LOD level has geometric error $\\varepsilon$. Seen at distance $d$ through a "
+        "perspective camera with vertical field of view $\\theta$ on a viewport $H$ pixels "
+        "high, how many pixels does that error cover?",
+        ("$\\varepsilon H / (2 d \\tan(\\theta/2))$", "The half-height $d\\tan(\\theta/2)$ "
+         "of the view volume at distance $d$ fills half the viewport, $H/2$ pixels."),
+        ("$\\varepsilon H / (d \\tan(\\theta/2))$", "Twice too large: the half-height maps "
+         "to half the viewport, not to all of it."),
+        ("$\\varepsilon H / (2 d \\tan\\theta)$", "The half-height goes with the half-angle: "
+         "$\\tan\\theta$ of the full angle is not the half-height per unit distance."),
+        ("$\\varepsilon H d / (2 \\tan(\\theta/2))$", "An error further away looks smaller, "
+         "so $d$ divides; it does not multiply."),
+        correct=0),
+    _mc(6, "ch06-lod-which-level",
+        "Given a pixel tolerance, which discrete level does a renderer draw?",
+        ("The finest level whose screen-space error is within the tolerance", "The finest "
+         "level (the original, error 0) always passes: drawing it defeats the purpose of LOD."),
+        ("The coarsest level whose screen-space error is within the tolerance", "The cheapest "
+         "level that still looks right: fewer faces, no visible difference."),
+        ("The level whose face count is closest to the number of pixels covered", "Face "
+         "counts are not compared with pixels; the error in pixels is."),
+        ("The coarsest level whose geometric error is below the tolerance in pixels",
+         "A geometric error is a length in object units; it must be projected to pixels "
+         "(it depends on the distance) before it is compared with a pixel tolerance."),
+        correct=1),
+    _tf(6, "ch06-lod-pm-exact",
+        "A progressive mesh built from an edge-collapse record (the base mesh plus the vertex "
+        "splits in reverse order) reproduces exactly the mesh the simplification had at every "
+        "intermediate face count.", True,
+        "Each vertex split is the exact inverse of its collapse (it restores the vertex, its "
+        "position, the faces and their corners), so undoing the last collapses one by one "
+        "walks back through the same meshes.",
+        "It does: a split stores everything its collapse changed, so nothing is approximated."),
+    _mc(6, "ch06-lod-geomorph",
+        "What does a geomorph do when a progressive mesh switches between two levels?",
+        ("It moves each vertex of the finer level from the position of the vertex that stands "
+         "for it in the coarser level to its own position, over a few frames", "So the surface "
+         "changes continuously: no sudden jump (popping) at the switch."),
+        ("It blends the two levels' rendered images with transparency", "That is a "
+         "cross-fade between images (alpha blending), which draws both levels, not a geomorph."),
+        ("It switches instantly but only when the object is off screen", "That hides the "
+         "switch; a geomorph makes it smooth while it is visible."),
+        ("It adds the faces of the finer level one at a time in random order", "Faces appear "
+         "through vertex splits in the record's order; a geomorph interpolates positions."),
+        correct=0),
+    _tf(6, "ch06-lod-hysteresis",
+        "Hysteresis in LOD selection uses slightly different switch distances for going "
+        "coarser and going finer, to stop a level from flickering when the viewer hovers "
+        "near a switch distance.", True,
+        "With one threshold, small movements back and forth across it switch levels every "
+        "frame; a band between the two thresholds keeps the current level.",
+        "It is true: the two thresholds form a band in which the level does not change."),
 ]
