@@ -36,6 +36,7 @@ from ._ch07.bsplines import (ActiveControlPoints, BSplinePoint, BasisSupport, Cl
 from ._ch07.rational import CircleArc, ConicType, RationalBezierPoint
 from ._ch07.patches import BezierSurfacePoint
 from ._ch07.properties import PROPERTY_MENU, CurveProperties
+from ._ch07.continuity import C1JoinPoint, JoinContinuityCheck, MatrixFormPoint
 
 __all__ = [
     "EXERCISES",
@@ -56,6 +57,9 @@ __all__ = [
     "DeCasteljauPoint",
     "DegreeElevation",
     "RationalBezierPoint",
+    "C1JoinPoint",
+    "JoinContinuityCheck",
+    "MatrixFormPoint",
 ]
 
 #: The exercises of chapter 7, in the order of the solutions notebook.
@@ -76,4 +80,7 @@ EXERCISES = (
     ConicType,
     BezierSurfacePoint,
     CurveProperties,
+    JoinContinuityCheck,
+    MatrixFormPoint,
+    C1JoinPoint,
 )
