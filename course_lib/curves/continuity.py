@@ -72,7 +72,7 @@ def circle_parametric(t, radius=1.0, center=(0.0, 0.0)):
     """
     t = as_array(t, "t")
     r = as_positive(radius, "radius")
-    c = _center(center)
+    c = _circle_center(center)
     return c + r * np.stack([np.cos(t), np.sin(t)], axis=-1)
 
 
@@ -102,7 +102,7 @@ def circle_implicit(points, radius=1.0, center=(0.0, 0.0)):
     if p.ndim < 1 or p.shape[-1] != 2:
         raise ValueError(f"points must have 2 coordinates in the last axis, got shape {p.shape}")
     r = as_positive(radius, "radius")
-    q = p - _center(center)
+    q = p - _circle_center(center)
     return np.sum(q * q, axis=-1) - r * r
 
 
@@ -136,10 +136,10 @@ def circle_rational(s, radius=1.0, center=(0.0, 0.0)):
     s = as_array(s, "s")
     r = as_positive(radius, "radius")
     d = 1.0 + s * s
-    return _center(center) + r * np.stack([(1 - s * s) / d, 2 * s / d], axis=-1)
+    return _circle_center(center) + r * np.stack([(1 - s * s) / d, 2 * s / d], axis=-1)
 
 
-def _center(value):
+def _circle_center(value):
     c = as_array(value, "center")
     if c.shape != (2,):
         raise ValueError(f"center must be a vector of 2 numbers, got shape {c.shape}")
@@ -386,7 +386,7 @@ def join_continuity(a, b, tol=1e-6):
     return JoinContinuity(c, max(g, c), gap, angle, kappas)
 
 
-def _continuity(value):
+def _continuity_order(value):
     c = as_choice(value, "continuity", JOINS)
     return c[0], int(c[1])
 
@@ -436,7 +436,7 @@ def join_points(control_points, continuity, degree=None, ratio=1.0, beta2=0.0):
     array([ 4.5, -1.5])
     """
     p = _control_points(control_points)
-    kind, k = _continuity(continuity)
+    kind, k = _continuity_order(continuity)
     n = len(p) - 1
     m = n if degree is None else as_whole(degree, "degree", 1, at_least=True)
     r = as_positive(ratio, "ratio", "h1 / h0 for C^k, beta1 for G^k")
@@ -495,7 +495,7 @@ def constrain_join(P, Q, continuity):
     q = _control_points(Q, "Q").copy()
     if q.shape[1] != p.shape[1]:
         raise ValueError(f"Q must have the dimension of P ({p.shape[1]}), got {q.shape[1]}")
-    kind, k = _continuity(continuity)
+    kind, k = _continuity_order(continuity)
     n, m = len(p) - 1, len(q) - 1
     if m < k:
         raise ValueError(f"Q must have at least {k + 1} points for {continuity}, got {m + 1}")

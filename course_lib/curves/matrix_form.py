@@ -89,7 +89,7 @@ def basis_matrix(name):
     return _MATRICES[as_choice(name, "name", BASIS_NAMES)].copy()
 
 
-def _matrix(value, name="M"):
+def _basis_or_matrix(value, name="M"):
     if isinstance(value, str):
         return basis_matrix(value)
     m = as_array(value, name)
@@ -134,7 +134,7 @@ def power_row(t, order=0):
     return np.stack(cols, axis=-1)
 
 
-def _geometry(value, name="G"):
+def _cubic_geometry(value, name="G"):
     g = as_array(value, name)
     if g.ndim != 2 or g.shape[0] != 4 or g.shape[1] < 1:
         raise ValueError(f"{name} must hold the 4 geometric quantities as rows, shape (4, d), "
@@ -166,8 +166,8 @@ def cubic_matrix_eval(basis, G, t, order=0):
     >>> cubic_matrix_eval("bezier", G, 0.5)           # (P0 + 3 P1 + 3 P2 + P3) / 8
     array([2. , 1.5])
     """
-    m = _matrix(basis, "basis")
-    g = _geometry(G)
+    m = _basis_or_matrix(basis, "basis")
+    g = _cubic_geometry(G)
     return power_row(t, order) @ (m @ g)
 
 
@@ -188,7 +188,7 @@ def basis_functions(basis, t):
     >>> basis_functions("bspline", 0.0) * 6        # the bell at its knots: 1/6, 4/6, 1/6
     array([1., 4., 1., 0.])
     """
-    return power_row(t) @ _matrix(basis, "basis")
+    return power_row(t) @ _basis_or_matrix(basis, "basis")
 
 
 def convert_geometry(G, from_, to):
@@ -216,9 +216,9 @@ def convert_geometry(G, from_, to):
            [2., 1.],
            [3., 0.]])
     """
-    g = _geometry(G)
-    m_from = _matrix(from_, "from_")
-    m_to = _matrix(to, "to")
+    g = _cubic_geometry(G)
+    m_from = _basis_or_matrix(from_, "from_")
+    m_to = _basis_or_matrix(to, "to")
     if abs(np.linalg.det(m_to)) < 1e-12:
         raise ValueError("to must be an invertible basis matrix (its blending functions must "
                          "be independent)")

@@ -88,11 +88,11 @@ def scene(state):
         s[f"teeth_{name}"], s[f"tips_{name}"] = _comb_lines(base, tips)
     join = curves.join_continuity(p, q, tol=1e-6)
     s["join"] = join
-    s["text"] = _describe(mode, join)
+    s["text"] = _continuity_text(mode, join)
     return s
 
 
-def _describe(mode, join):
+def _continuity_text(mode, join):
     if join.C < 0:
         measured = "the segments do not meet (no C0)"
     else:

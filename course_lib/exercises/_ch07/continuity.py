@@ -20,7 +20,7 @@ _PAIR = ("**Answer:** the list `[C, G]` of two whole numbers: the highest $k \\l
          "meet).")
 
 
-def _cross(a, b):
+def _cross_z(a, b):
     return float(a[0] * b[1] - a[1] * b[0])
 
 
@@ -60,7 +60,7 @@ class JoinContinuityCheck(_Chapter7):
             P = rng.integers(0, 4, size=(4, 2)).astype(float)
             d = P[3] - P[2]
             a = P[3] - 2 * P[2] + P[1]
-            if np.abs(d).sum() > 0 and abs(_cross(d, a)) > 0 and np.abs(d).max() <= 2:
+            if np.abs(d).sum() > 0 and abs(_cross_z(d, a)) > 0 and np.abs(d).max() <= 2:
                 break
         beta = {"cusp": float(pick(rng, (-1, -2))), "G1": float(pick(rng, (2, 3))),
                 "C1": 1.0, "G2": 2.0, "C1G2": 1.0, "C2": 1.0}[self.kind]
@@ -132,12 +132,12 @@ class JoinContinuityCheck(_Chapter7):
 
     def worked(self):
         a1, b1, a2, b2 = self._derivs()
-        ka = _cross(a1, a2) / np.linalg.norm(a1) ** 3
-        kb = _cross(b1, b2) / np.linalg.norm(b1) ** 3
+        ka = _cross_z(a1, a2) / np.linalg.norm(a1) ** 3
+        kb = _cross_z(b1, b2) / np.linalg.norm(b1) ** 3
         ratio = float(b1 @ a1 / (a1 @ a1))
         c = (2 if np.allclose(a2, b2) else 1) if np.allclose(a1, b1) else 0
         g = max(c, (2 if abs(ka - kb) < 1e-9 else 1)
-                if ratio > 0 and abs(_cross(a1, b1)) < 1e-9 else 0)
+                if ratio > 0 and abs(_cross_z(a1, b1)) < 1e-9 else 0)
         steps = [rf"$Q_0 = P_3 = {_vec(self.P[3])}$: the segments meet (C0).",
                  rf"$A'(1) = 3(P_3 - P_2) = {_vec(a1)}$, $B'(0) = 3(Q_1 - Q_0) = {_vec(b1)}$ "
                  rf"$= {_num(ratio)}\,A'(1)$: "
@@ -173,7 +173,7 @@ _GEOMETRY = {"bezier": r"G = [P_0, P_1, P_2, P_3]",
              "catmull-rom": r"G = [P_0, P_1, P_2, P_3]"}
 
 
-def _matrix_latex(m, scale):
+def _basis_matrix_latex(m, scale):
     rows = r" \\ ".join(" & ".join(_num(v * scale) for v in row) for row in m)
     front = "" if scale == 1 else rf"\tfrac{{1}}{{{scale}}}"
     return front + r"\begin{bmatrix}" + rows + r"\end{bmatrix}"
@@ -262,7 +262,7 @@ class MatrixFormPoint(_Chapter7):
     def statement(self):
         s = self._scale()
         return (rf"A {_FORMS[self.form]} segment in matrix form $P(t) = T\,M\,G$ with "
-                rf"$T = [t^3, t^2, t, 1]$, $M = {_matrix_latex(self.M, s)}$ and "
+                rf"$T = [t^3, t^2, t, 1]$, $M = {_basis_matrix_latex(self.M, s)}$ and "
                 rf"${_GEOMETRY[self.form]}$ with rows "
                 + ", ".join(f"${_vec(g)}$" for g in self.G)
                 + rf". Compute $P(t)$ for $t = {_frac(self.t)}$." "\n\n" + _POINT_2 + "\n\n"
