@@ -116,6 +116,20 @@ def test_g2_not_c2_and_c1_implies_g1_and_callables():
     assert C.join_continuity(fa, fb)[:2] == (0, 2)
 
 
+def test_join_at_the_origin_with_callables():
+    # a circle arc (cos, sin) shifted to start at the origin, then its continuation: C2, G2
+    def arc(offset):
+        def f(t, k):
+            a = t + offset
+            v = [np.cos(a + k * np.pi / 2), np.sin(a + k * np.pi / 2)]
+            return np.array(v) - (np.array([np.cos(1.0), np.sin(1.0)]) if k == 0 else 0)
+        return f
+    assert C.join_continuity(arc(0.0), arc(1.0))[:2] == (2, 2)
+    # the same arc traversed twice as fast afterwards: G2, only C0
+    fast = lambda t, k: 2.0 ** k * arc(1.0)(2 * t, k) if k else arc(1.0)(2 * t, 0)  # noqa: E731
+    assert C.join_continuity(arc(0.0), fast)[:2] == (0, 2)
+
+
 def test_join_points_formulas_match_derivatives():
     gen = rng(3)
     for _ in range(5):

@@ -301,7 +301,9 @@ def curvature_comb(control_points, t, scale=1.0):
 # ---------------------------------------------------------------------------------------------
 
 def _end_derivatives(curve, end, name):
-    """[P, P', P''] at parameter `end` of a Bézier polygon or a callable f(t, order)."""
+    """[P, P', P''] at parameter `end` of a Bézier polygon or a callable f(t, order), and the
+    curve's size for the relative tolerances (the polygon's extent; for a callable the larger
+    of |P| and |P'| at the end)."""
     if callable(curve):
         out = []
         for k in range(3):
@@ -310,7 +312,7 @@ def _end_derivatives(curve, end, name):
                 raise ValueError(f"{name}(t, order) must return a 2D or 3D vector, got shape "
                                  f"{v.shape}")
             out.append(v)
-        return np.array(out), float(np.max(np.abs(out[0])))
+        return np.array(out), float(max(np.max(np.abs(out[0])), np.max(np.abs(out[1]))))
     p = _control_points(curve, name)
     if p.shape[1] not in (2, 3):
         raise ValueError(f"{name} must be 2D or 3D points, got {p.shape[1]} coordinates")
