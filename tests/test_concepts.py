@@ -1134,3 +1134,37 @@ def test_fact_ch06_lod():
     g0, _ = pm.geomorph(120, 250, 0.0)
     coarse, _ = pm.mesh(120)
     assert np.allclose(np.linalg.norm(g0[:, None] - coarse[None], axis=2).min(axis=1), 0)
+
+
+def test_fact_ch07_continuity_curvature_matrix_form():
+    # G1 vs C1: B'(0) = 2 A'(1) has equal unit tangents, unequal derivatives
+    a, b = np.array([2.0, 2.0]), np.array([4.0, 4.0])
+    assert np.allclose(a / np.linalg.norm(a), b / np.linalg.norm(b)) and not np.allclose(a, b)
+    assert answer_text("ch07-continuity-g1-vs-c1") == "$G^1$ but not $C^1$"
+    # opposite tangents: unit tangents differ (a cusp), so not G1
+    assert not truth("ch07-continuity-opposite-tangents")
+    assert not np.allclose(a / np.linalg.norm(a), -a / np.linalg.norm(a))
+    # circle curvature 1/r from finite differences of r (cos t, sin t)
+    assert answer_text("ch07-continuity-curvature-circle") == "$1/r$"
+    for r in (0.5, 2.0, 3.0):
+        t, h = 0.7, 1e-4
+        P = lambda s: r * np.array([np.cos(s), np.sin(s)])        # noqa: E731
+        d1 = (P(t + h) - P(t - h)) / (2 * h)
+        d2 = (P(t + h) - 2 * P(t) + P(t - h)) / h ** 2
+        kappa = abs(d1[0] * d2[1] - d1[1] * d2[0]) / np.linalg.norm(d1) ** 3
+        assert kappa == pytest.approx(1 / r, rel=1e-6)
+    # G2 without C1: beta constraints with beta1 = 2 on a Bezier join, by hand
+    assert truth("ch07-continuity-g2-needs-c2")
+    A = np.array([[0, 0], [1, 0], [2, 0], [3, 1]], float)
+    a1, a2 = 3 * (A[3] - A[2]), 6 * (A[3] - 2 * A[2] + A[1])
+    b1, b2 = 2 * a1, 4 * a2 + 1.5 * a1
+    cross = lambda u, v: u[0] * v[1] - u[1] * v[0]                # noqa: E731
+    assert cross(a1, a2) / np.linalg.norm(a1) ** 3 == pytest.approx(
+        cross(b1, b2) / np.linalg.norm(b1) ** 3) and not np.allclose(a1, b1)
+    # T = [t^3, t^2, t, 1] with the Bezier matrix gives the Bernstein polynomials
+    assert answer_text("ch07-matrix-form-t-row") == "$[t^3, t^2, t, 1]$"
+    M = np.array([[-1, 3, -3, 1], [3, -6, 3, 0], [-3, 3, 0, 0], [1, 0, 0, 0]])
+    for t in (0.2, 0.5, 0.9):
+        bern = [math.comb(3, i) * t ** i * (1 - t) ** (3 - i) for i in range(4)]
+        assert np.allclose(np.array([t ** 3, t ** 2, t, 1]) @ M, bern)
+        assert not np.allclose(np.array([1, t, t ** 2, t ** 3]) @ M, bern)

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from .._validate import as_scalar, as_whole
+from .._validate import as_array, as_scalar, as_whole
 from ._common import _control_points, _degree, _knot_vector, _parameters
 
 __all__ = ["bspline", "bspline_basis", "bspline_basis_derivative", "bspline_derivative",
@@ -166,10 +166,46 @@ def _basis_up_to(u, spans, t, degree):
     return n
 
 
+def _basis_knots(value, degree, name="knots"):
+    """Knots for basis functions only: (u, n_functions, has_domain).
+
+    A basis function :math:`N_{i,p}` needs only its p + 2 knots, so any non-decreasing vector of
+    at least degree + 2 knots (no value more than degree + 1 times) defines
+    ``len(knots) - degree - 1`` of them; only a *curve* needs the domain [u_p, u_n] to be
+    non-empty. `has_domain` tells whether it is.
+    """
+    u = as_array(value, name)
+    if u.ndim != 1:
+        raise ValueError(f"{name} must be a 1D array of numbers, got shape {u.shape}")
+    p = as_whole(degree, "degree", 0, at_least=True)
+    if p < 1:
+        raise ValueError(f"degree must be at least 1 (1 = linear, 2 = quadratic, 3 = cubic), "
+                         f"got {p}")
+    if len(u) < p + 2:
+        raise ValueError(f"{name} must have at least degree + 2 = {p + 2} values (the knots of "
+                         f"one basis function of degree {p}), got {len(u)}")
+    n = len(u) - p - 1
+    if n >= p + 1 and u[p] < u[n]:
+        _knot_vector(u, p, name=name)           # the full curve checks (same messages as before)
+        return u, n, True
+    step = np.diff(u)
+    if np.any(step < 0):
+        i = int(np.argmax(step < 0))
+        raise ValueError(f"{name} must be non-decreasing, but {name}[{i}] = {float(u[i])!r} > "
+                         f"{name}[{i + 1}] = {float(u[i + 1])!r}")
+    values, counts = np.unique(u, return_counts=True)
+    if counts.max() > p + 1:
+        j = int(np.argmax(counts))
+        raise ValueError(f"{name} must not repeat a value more than degree + 1 = {p + 1} times, "
+                         f"but {float(values[j])!r} appears {counts[j]} times (a basis function "
+                         "would vanish everywhere)")
+    return u, n, False
+
+
 def _basis_input(knots, degree, t, full_range):
-    u, n = _knot_vector(knots, degree)
+    u, n, has_domain = _basis_knots(knots, degree)
     p = int(degree)
-    if full_range:
+    if full_range or not has_domain:
         lo, hi = u[0], u[-1]
     else:
         lo, hi = u[p], u[n]
@@ -195,12 +231,16 @@ def bspline_basis(knots, degree, t, full_range=False):
     Parameters
     ----------
     knots : array_like, shape (n_control + degree + 1,)
-        Non-decreasing knots, no value repeated more than degree + 1 times.
+        Non-decreasing knots, no value repeated more than degree + 1 times, at least
+        degree + 2 of them (the knots of one basis function). A knot vector too short for a
+        curve (fewer than 2 * degree + 2 knots, or an empty domain) still defines its
+        ``len(knots) - degree - 1`` basis functions: t then ranges over the whole knot vector,
+        as with ``full_range=True``.
     degree : int
         p >= 1.
     t : float or array_like
         Parameter values in the domain (see :func:`domain`), or anywhere in
-        ``[knots[0], knots[-1]]`` with ``full_range=True``.
+        ``[knots[0], knots[-1]]`` with ``full_range=True`` (or a knot vector with no domain).
     full_range : bool, default False
         Allow t over the whole knot vector, to draw every basis function's full support (for a
         uniform knot vector, the familiar row of identical bells). Outside the domain the
@@ -223,6 +263,14 @@ def bspline_basis(knots, degree, t, full_range=False):
     array([[1.   , 0.   , 0.   , 0.   ],
            [0.   , 0.5  , 0.5  , 0.   ],
            [0.   , 0.125, 0.625, 0.25 ]])
+
+    The knots {0, 1, 2, 3, 4} are too few for a quadratic curve but define 5 - 2 - 1 = 2
+    basis functions, the bells :math:`N_{0,2}` on [0, 3] and :math:`N_{1,2}` on [1, 4]:
+
+    >>> bspline_basis([0, 1, 2, 3, 4], 2, [0.5, 1.5, 2.5])
+    array([[0.125, 0.   ],
+           [0.75 , 0.125],
+           [0.125, 0.75 ]])
     """
     u, n, p, t, flat, spans = _basis_input(knots, degree, t, full_range)
     return _basis_up_to(u, spans, flat, p).reshape(t.shape + (n,))

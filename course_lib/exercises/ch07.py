@@ -38,6 +38,7 @@ from ._ch07.patches import BezierSurfacePoint
 from ._ch07.properties import PROPERTY_MENU, CurveProperties
 from ._ch07.interpolating import (CatmullRomPoint, CatmullRomTangent, HermitePoint,
                                   SplineSecondDerivatives)
+from ._ch07.continuity import C1JoinPoint, JoinContinuityCheck, MatrixFormPoint
 
 __all__ = [
     "EXERCISES",
@@ -63,6 +64,9 @@ __all__ = [
     "CatmullRomTangent",
     "HermitePoint",
     "SplineSecondDerivatives",
+    "C1JoinPoint",
+    "JoinContinuityCheck",
+    "MatrixFormPoint",
 ]
 
 #: The exercises of chapter 7, in the order of the solutions notebook.
@@ -88,4 +92,7 @@ EXERCISES = (
     CatmullRomTangent,
     CatmullRomPoint,
     SplineSecondDerivatives,
+    JoinContinuityCheck,
+    MatrixFormPoint,
+    C1JoinPoint,
 )

@@ -171,4 +171,49 @@ QUESTIONS = [
         "and the spline's system divides by $h_i = 0$. Remove duplicates first.",
         "Right: equal consecutive points make $t_i = t_{i+1}$, which an interpolating spline "
         "cannot handle."),
+    _mc(7, "ch07-continuity-g1-vs-c1",
+        "Two curve segments meet with end tangents $A'(1) = (2, 2)$ and $B'(0) = (4, 4)$. "
+        "Their join is:",
+        ("$C^1$", "$C^1$ needs the derivative vectors themselves equal, length included; "
+         "here $B'(0) = 2A'(1)$."),
+        ("$G^1$ but not $C^1$", "The unit tangents agree (same direction, positive factor "
+         "2) but the speed jumps: geometric, not parametric, continuity."),
+        ("Neither $G^1$ nor $C^1$", "Parallel tangents pointing the same way are exactly "
+         "what $G^1$ asks for."),
+        ("A cusp", "A cusp has tangents pointing in opposite directions; these point the same "
+         "way."),
+        correct=1),
+    _tf(7, "ch07-continuity-opposite-tangents",
+        "A join whose end tangents lie on the same line but point in opposite directions is "
+        "$G^1$.", False,
+        "$G^1$ needs equal unit tangents, $B'(0) = \\beta A'(1)$ with $\\beta > 0$; opposite "
+        "directions make the curve turn back on itself (a cusp).",
+        "Right: the direction matters, not only the line."),
+    _mc(7, "ch07-continuity-curvature-circle",
+        "What is the curvature $\\kappa = \\lVert P' \\times P'' \\rVert / \\lVert P' "
+        "\\rVert^3$ of a circle of radius $r$?",
+        ("$r$", "The curvature is the inverse of the radius of the osculating circle."),
+        ("$1/r$", "With $P = r(\\cos t, \\sin t)$: $|P' \\times P''| = r^2$ and "
+         "$|P'|^3 = r^3$."),
+        ("$1/r^2$", "The cross product gives $r^2$, divided by $r^3$: one power of $r$ is left."),
+        ("It depends on the parametrization", "Curvature is a property of the shape: any "
+         "regular parametrization gives $1/r$."),
+        correct=1),
+    _tf(7, "ch07-continuity-g2-needs-c2",
+        "Two cubic segments can be $G^2$ at their join without being $C^1$.", True,
+        "$G^2$ fixes the direction of the tangent and the curvature vector, not the speed: "
+        "$B'(0) = \\beta_1 A'(1)$, $B''(0) = \\beta_1^2 A''(1) + \\beta_2 A'(1)$ with "
+        "$\\beta_1 \\ne 1$ is $G^2$ and not $C^1$.",
+        "It can: geometric continuity ignores the speed, so the derivatives may differ."),
+    _mc(7, "ch07-matrix-form-t-row",
+        "In the matrix form $P(t) = T\\,M\\,G$ of a cubic Bézier curve with the basis "
+        "matrix whose first row is $[-1, 3, -3, 1]$, the row $T$ is:",
+        ("$[1, t, t^2, t^3]$", "That order belongs to a matrix with its rows reversed; with "
+         "this $M$ the first row multiplies $t^3$."),
+        ("$[t^3, t^2, t, 1]$", "The first row of $M$ holds the coefficients of $t^3$ "
+         "(those of $-P_0 + 3P_1 - 3P_2 + P_3$)."),
+        ("$[B_0^3(t), \\dots, B_3^3(t)]$", "Those are the products $T M$, the blending "
+         "functions, not $T$."),
+        ("$[P_0, P_1, P_2, P_3]$", "That is the geometry $G$."),
+        correct=1),
 ]
