@@ -87,12 +87,13 @@ EXERCISES = (
     ConicType,
     BezierSurfacePoint,
     CurveProperties,
+    # continuity and the matrix form of cubics
+    JoinContinuityCheck,
+    MatrixFormPoint,
+    C1JoinPoint,
     # interpolating curves
     HermitePoint,
     CatmullRomTangent,
     CatmullRomPoint,
     SplineSecondDerivatives,
-    JoinContinuityCheck,
-    MatrixFormPoint,
-    C1JoinPoint,
 )
