@@ -12,6 +12,10 @@ References, and why they are fair:
 * simplification: fast-simplification (Fast-Quadric-Mesh-Simplification, C++) runs the same
   Garland-Heckbert quadric metric on the same input and target. Ours is a Python loop over the
   collapses, with numpy for the set-up; the target is under 5 s for 20,000 -> 2,000 faces.
+
+The topic files of the chapter follow: the model forms' conversions (ch06_forms), clustering,
+vertex decimation and Hausdorff distances against VTK and trimesh (ch06_decimation), levels of
+detail and progressive meshes (ch06_lod).
 """
 import numpy as np
 
@@ -46,7 +50,7 @@ def operations(quick=False):
         t = trimesh.Trimesh(v, f, process=False)
         return t.face_adjacency, t.edges_unique
 
-    return [
+    rows = [
         operation_row("half-edge build (icosphere)", len(f),
                       lambda: mesh.HalfEdgeMesh.from_faces(v, f), trimesh_adjacency,
                       "trimesh Trimesh + face_adjacency + edges_unique", repeat),
@@ -62,6 +66,15 @@ def operations(quick=False):
                                                            target_reduction=reduction),
                       "fast-simplification (C++)", 1 if not quick else repeat),
     ]
+    for topic in _topics():
+        rows += topic.operations(quick)
+    return rows
+
+
+def _topics():
+    from benchmarks import ch06_decimation, ch06_forms, ch06_lod
+
+    return (ch06_forms, ch06_decimation, ch06_lod,)
 
 
 def widgets(quick=False):
@@ -96,4 +109,6 @@ def widgets(quick=False):
                            lambda i: setattr(eu.choice, "value", choices[i % len(choices)]),
                            eu.fig.canvas.draw, repeat))
     plt.close(eu.fig)
+    for topic in _topics():
+        rows += topic.widgets(quick)
     return rows

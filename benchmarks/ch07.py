@@ -2,6 +2,8 @@
 
 geomdl is pure Python (one parameter value at a time), so its rows use fewer repeats; the
 `bezier` package and geomdl are test-only references (installed with the test extras).
+The topic files of the chapter follow: continuity, curvature and the matrix form
+(ch07_continuity), interpolating curves against scipy (ch07_interpolating).
 """
 import numpy as np
 
@@ -72,7 +74,7 @@ def operations(quick=False):
     geomdl_surface.knotvector_u = geomdl_surface.knotvector_v = kn.tolist()
     geomdl_surface.sample_size = side             # evaluate() recomputes the side x side grid
 
-    return [
+    rows = [
         operation_row("B-spline curve (20 points 3D, degree 3)", m,
                       lambda: curves.bspline(points, knots, 3, t),
                       lambda: BSpline(knots, points, 3, extrapolate=False)(t), "scipy BSpline",
@@ -93,6 +95,15 @@ def operations(quick=False):
              lambda: surfaces.nurbs_surface(grid, grid_weights, kn, kn, 3, 3, uv, uv),
              geomdl_surface.evaluate, "geomdl evaluate", repeat, slow_repeat),
     ]
+    for topic in _topics():
+        rows += topic.operations(quick)
+    return rows
+
+
+def _topics():
+    from benchmarks import ch07_continuity, ch07_interpolating
+
+    return (ch07_continuity, ch07_interpolating,)
 
 
 def widgets(quick=False):
@@ -126,4 +137,6 @@ def widgets(quick=False):
                            lambda i: setattr(explorer.lift, "value", -1.0 + 0.05 * (i % 40)),
                            lambda: explorer.png(), repeat))
     explorer.plotter.close()
+    for topic in _topics():
+        rows += topic.widgets(quick)
     return rows
