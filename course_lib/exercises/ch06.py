@@ -65,3 +65,9 @@ EXERCISES = (
     CollapseCost,
     OptimalPosition,
 )
+
+# Section "other simplification methods": vertex clustering, decimation, Hausdorff distance.
+from ._ch06.decimation import ClusterSurvivors, DecimationCriterion, HausdorffByHand  # noqa: E402
+
+__all__ += ["ClusterSurvivors", "DecimationCriterion", "HausdorffByHand"]
+EXERCISES += (ClusterSurvivors, DecimationCriterion, HausdorffByHand)
