@@ -154,6 +154,9 @@ def test_clustering_quadric_keeps_the_corners_of_a_cube():
     corner = np.abs(np.abs(quad.vertices) - 1).max(axis=1) < 1e-9
     assert corner.sum() == 8                       # the quadric point is the exact corner
     assert (np.abs(np.abs(mean.vertices) - 1).max(axis=1) < 1e-9).sum() == 0
+    # cells on an edge or a face: the least-squares point nearest the mean is on the cube
+    assert np.allclose(np.abs(quad.vertices).max(axis=1), 1)
+    assert not np.allclose(np.abs(mean.vertices).max(axis=1), 1)
 
 
 def _subdivide(v, f, times):

@@ -10,8 +10,9 @@ triangle with the representatives of its corners.
 2. One representative per occupied cell: the mean of its vertices, or the **quadric-optimal**
    point: the point minimising :math:`\bar v^T (\sum Q_i) \bar v` over the quadrics of the
    cell's vertices (Lindstrom's variant, used by VTK's ``vtkQuadricClustering``), which keeps
-   sharp edges and corners that the mean rounds off. If that point is undefined (flat cell:
-   the planes do not pin down a point) or leaves the cell by more than half a cell, the mean is
+   sharp edges and corners that the mean rounds off. When the planes do not pin down a point
+   (a flat cell, or a cell on a crease) the minimiser nearest to the mean is taken (through
+   the pseudo-inverse); if the point leaves the cell by more than half a cell, the mean is
    used.
 3. Each triangle :math:`(a, b, c)` becomes (cell(a), cell(b), cell(c)). A triangle with two
    corners in one cell **degenerates** (into an edge or a point) and is dropped; two triangles
@@ -27,7 +28,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .._validate import as_choice, as_mesh, as_positive, as_whole
-from .geometry import _optimal, vertex_quadrics
+from .geometry import vertex_quadrics
 
 __all__ = ["Clustered", "cluster_cells", "vertex_clustering"]
 
@@ -91,6 +92,23 @@ def cluster_cells(vertices, cell_size, origin=None):
     return np.floor((v - o) / h + 1e-9).astype(np.int64)
 
 
+def _least_squares_point(Q, mean):
+    """The minimiser of v^T Q v nearest to `mean` (pseudo-inverse, Lindstrom's rule).
+
+    With A the 3x3 block and b the last column, v = m + sum over the eigenvectors u_i of A
+    with eigenvalue lambda_i > 1e-3 lambda_max of u_i (u_i . (-b - A m)) / lambda_i: the exact
+    minimiser when the planes meet in a point (rank 3), the point of their common line
+    (rank 2) or plane (rank 1) nearest to the mean otherwise.
+    """
+    A, b = Q[:, :3, :3], Q[:, :3, 3]
+    lam, U = np.linalg.eigh(A)
+    r = -b - np.einsum("kij,kj->ki", A, mean)
+    coef = np.einsum("kji,kj->ki", U, r)
+    keep = lam > 1e-3 * np.maximum(lam[:, -1:], 1e-300)
+    step = np.where(keep, coef / np.where(keep, lam, 1.0), 0.0)
+    return mean + np.einsum("kij,kj->ki", U, step)
+
+
 def vertex_clustering(vertices, faces, cell_size=None, cells=None, representative="mean"):
     r"""Simplify a triangle mesh by vertex clustering on a uniform grid (Rossignac-Borrel).
 
@@ -106,7 +124,8 @@ def vertex_clustering(vertices, faces, cell_size=None, cells=None, representativ
         At least 1.
     representative : {"mean", "quadric"}
         The merged vertex: the mean of the cell's vertices, or the point minimising the sum of
-        their quadrics (:func:`course_lib.mesh.vertex_quadrics`), falling back on the mean.
+        their quadrics (:func:`course_lib.mesh.vertex_quadrics`) nearest to the mean, falling
+        back on the mean if it leaves the cell by more than half a cell.
 
     Returns
     -------
@@ -159,7 +178,7 @@ def vertex_clustering(vertices, faces, cell_size=None, cells=None, representativ
     if mode == "quadric":
         Q = vertex_quadrics(v, f).reshape(-1, 16)
         S = np.stack([np.bincount(vmap, Q[:, i], minlength=k) for i in range(16)], axis=1)
-        x, _ = _optimal(S.reshape(-1, 4, 4), rep, rep)
+        x = _least_squares_point(S.reshape(-1, 4, 4), rep)
         lo = v.min(axis=0) + cell_ids * h
         inside = np.all((x >= lo - h / 2) & (x <= lo + 1.5 * h), axis=1)
         rep = np.where(inside[:, None], x, rep)
