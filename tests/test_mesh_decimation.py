@@ -355,3 +355,35 @@ def test_errors():
         quadric_error(v, f, v, np.arange(3))
     with pytest.raises(ValueError, match="samples"):
         surface_distance(v, f, v, f, samples=0)
+
+
+def test_clustering_does_not_depend_on_the_vertex_order():
+    v, f = bumpy_sphere(3)
+    perm = np.random.default_rng(2).permutation(len(v))
+    inv = np.argsort(perm)
+    a = vertex_clustering(v, f, cells=6, representative="quadric")
+    b = vertex_clustering(v[perm], inv[f], cells=6, representative="quadric")
+    assert np.array_equal(a.cells, b.cells) and np.allclose(a.vertices, b.vertices)
+    assert {tuple(sorted(t)) for t in a.faces.tolist()} == {tuple(sorted(t)) for t in
+                                                            b.faces.tolist()}
+
+
+def test_decimate_a_mesh_with_a_boundary():
+    v, f = disc(rings=6, segments=24)
+    border = HalfEdgeMesh.from_faces(v, f).boundary_vertices()
+    out = decimate(v, f, target_faces=40)
+    assert len(out.faces) <= 41
+    m = HalfEdgeMesh.from_faces(out.vertices, out.faces)        # still manifold and oriented
+    assert len(m.boundary_loops()) == 1                        # one rim, no new hole
+    # a flat disc: the simplified disc still lies in the plane z = 0, with the same winding
+    assert np.allclose(out.vertices[:, 2], 0)
+    t = out.vertices[out.faces]
+    z = np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0])[:, 2]
+    assert np.all(z > 0)
+    # interior vertices go first (criterion 0); then boundary ones, cutting corners of the
+    # 24-gon: the area shrinks, but not below that of an inscribed 8-gon (smaller than 40 faces
+    # allow with every interior vertex gone, 24 - 2 = 22 faces)
+    area = z.sum() / 2
+    full = 0.5 * np.sum(np.cross(v[f][:, 1] - v[f][:, 0], v[f][:, 2] - v[f][:, 0])[:, 2])
+    assert 0.5 * 8 * np.sin(2 * np.pi / 8) <= area <= full + 1e-12
+    assert border.sum() == 24
