@@ -1168,3 +1168,28 @@ def test_fact_ch07_continuity_curvature_matrix_form():
         bern = [math.comb(3, i) * t ** i * (1 - t) ** (3 - i) for i in range(4)]
         assert np.allclose(np.array([t ** 3, t ** 2, t, 1]) @ M, bern)
         assert not np.allclose(np.array([1, t, t ** 2, t ** 3]) @ M, bern)
+
+
+def test_fact_ch06_decimation():
+    """Clustering closes small holes, decimation keeps original vertices, Hausdorff is
+    one-sided per direction, a half-edge collapse costs at least the full collapse."""
+    import trimesh
+    from scipy.spatial.distance import directed_hausdorff
+    from course_lib.mesh import torus
+    from course_lib.mesh.clustering import vertex_clustering
+    from course_lib.mesh.decimation import (decimate, full_edge_collapse_cost,
+                                            half_edge_collapse_cost)
+    assert not truth("ch06-clustering-topology") and truth("ch06-decimation-subset")
+    assert answer_text("ch06-hausdorff-one-sided").startswith("d(A -> B) = 0")
+    assert answer_text("ch06-half-edge-collapse").startswith("u moves onto w")
+    v, f = torus(major=1.0, minor=0.85, segments=32, rings=16)      # hole of radius 0.15
+    out = vertex_clustering(v, f, cells=5)      # the hole lies inside the middle cells
+    assert trimesh.Trimesh(v, f, process=False).euler_number == 0       # genus 1
+    assert trimesh.Trimesh(out.vertices, out.faces, process=False).euler_number == 2  # genus 0
+    d = decimate(v, f, target_faces=200)
+    assert all((np.abs(v - p).max(axis=1) == 0).any() for p in d.vertices)
+    patch = np.array([[0.0, 0], [0.1, 0], [0, 0.1]])
+    big = np.array([[x, y] for x in np.linspace(0, 1, 11) for y in np.linspace(0, 1, 11)])
+    assert directed_hausdorff(patch, big)[0] == 0 and directed_hausdorff(big, patch)[0] > 1
+    e = np.array([[0, 1], [1, 0], [0, 16], [16, 0]])
+    assert np.all(full_edge_collapse_cost(v, f, e)[1] <= half_edge_collapse_cost(v, f, e) + 1e-12)

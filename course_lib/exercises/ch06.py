@@ -75,3 +75,8 @@ from ._ch06.lod import LODChoice, SplitRecord  # noqa: E402
 
 __all__ += ["LODChoice", "SplitRecord"]
 EXERCISES = EXERCISES + (LODChoice, SplitRecord)
+# Section "other simplification methods": vertex clustering, decimation, Hausdorff distance.
+from ._ch06.decimation import ClusterSurvivors, DecimationCriterion, HausdorffByHand  # noqa: E402
+
+__all__ += ["ClusterSurvivors", "DecimationCriterion", "HausdorffByHand"]
+EXERCISES += (ClusterSurvivors, DecimationCriterion, HausdorffByHand)

@@ -171,4 +171,40 @@ QUESTIONS = [
         "With one threshold, small movements back and forth across it switch levels every "
         "frame; a band between the two thresholds keeps the current level.",
         "It is true: the two thresholds form a band in which the level does not change."),
+    _tf(6, "ch06-clustering-topology",
+        "Vertex clustering on a uniform grid always keeps the genus of the model.", False,
+        "It does not: a hole or a gap smaller than a cell has all its rim vertices merged into "
+        "a few representatives, so the hole closes (or thin parts merge); the result need not "
+        "even be manifold.",
+        "Right: the grid ignores the topology, holes smaller than a cell close."),
+    _tf(6, "ch06-decimation-subset",
+        "After vertex decimation (removing vertices and re-triangulating the holes) every vertex "
+        "of the simplified mesh is a vertex of the original mesh.", True,
+        "It is: decimation deletes vertices and never moves or creates one (unlike a full-edge "
+        "collapse, which puts the merged vertex at a new, optimised position).",
+        "Right: the survivors are a subset of the original vertices, at their places."),
+    _mc(6, "ch06-hausdorff-one-sided",
+        "A small patch A lies exactly on a large surface B. Which is true?",
+        ("d(A -> B) = 0 but d(B -> A) is large, so the Hausdorff distance is large",
+         "Every point of A is on B (distance 0), but points of B far from the patch are far "
+         "from A; the Hausdorff distance takes the larger of the two."),
+        ("Both one-sided distances are 0", "Only d(A -> B) is 0: the far parts of B have no "
+         "point of A near them."),
+        ("The Hausdorff distance is 0 because A is on B", "That is the one-sided distance from "
+         "A; the symmetric distance also looks from B."),
+        ("d(A -> B) is large and d(B -> A) = 0", "The other way round: A's points are on B."),
+        correct=0),
+    _mc(6, "ch06-half-edge-collapse",
+        "What distinguishes a half-edge collapse u -> w from a full-edge collapse (u, w) -> v?",
+        ("u moves onto w: no new position, so its quadric cost is never below the full "
+         "collapse's optimum", "The full collapse minimises the cost over all positions, w is "
+         "one of them; in exchange the half-edge collapse keeps the original vertices (good "
+         "for progressive meshes and vertex buffers)."),
+        ("It removes one face instead of two", "Both remove the two faces of the edge (one on a "
+         "boundary)."),
+        ("It only works on boundary edges", "It works on any edge; QEM's boundary rule is a "
+         "half-edge collapse onto the boundary vertex."),
+        ("It is always cheaper than the full collapse", "It can only cost as much or more: its "
+         "position is one of the positions the full collapse chooses among."),
+        correct=0),
 ]
