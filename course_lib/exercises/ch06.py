@@ -33,6 +33,9 @@ from ._ch06.euler import EdgeCollapseCounts, EulerCounts, GenusFromCounts
 from ._ch06.manifolds import MESH_KINDS, FlippedFace, Manifoldness
 from ._ch06.edge_records import HalfEdgeWalk, OneRing, WingedEdgeRecord
 from ._ch06.quadrics import CollapseCost, OptimalPosition, VertexQuadric
+from ._ch06.forms import BRepEulerRings, ChooseModelForm
+from ._ch06.decimation import ClusterSurvivors, DecimationCriterion, HausdorffByHand
+from ._ch06.lod import LODChoice, SplitRecord
 from ._ch06 import _SMALL, _shuffled  # used by the tests
 
 __all__ = [
@@ -49,6 +52,14 @@ __all__ = [
     "OptimalPosition",
     "VertexQuadric",
     "WingedEdgeRecord",
+    # the newer sections: forms and B-reps, clustering and decimation, level of detail
+    "BRepEulerRings",
+    "ChooseModelForm",
+    "ClusterSurvivors",
+    "DecimationCriterion",
+    "HausdorffByHand",
+    "LODChoice",
+    "SplitRecord",
 ]
 
 #: The exercises of chapter 6, in the order of the solutions notebook.
@@ -64,19 +75,14 @@ EXERCISES = (
     VertexQuadric,
     CollapseCost,
     OptimalPosition,
+    # the forms of a model and boundary representations with rings
+    BRepEulerRings,
+    ChooseModelForm,
+    # other simplification methods: vertex clustering, decimation, Hausdorff distance
+    ClusterSurvivors,
+    DecimationCriterion,
+    HausdorffByHand,
+    # level of detail: the screen-space error and progressive-mesh records
+    LODChoice,
+    SplitRecord,
 )
-
-# the forms of a model and B-reps with rings (course_lib/exercises/_ch06/forms.py)
-from ._ch06.forms import BRepEulerRings, ChooseModelForm  # noqa: E402
-__all__ += ["BRepEulerRings", "ChooseModelForm"]
-EXERCISES += (BRepEulerRings, ChooseModelForm)
-# level of detail: the screen-space error and progressive-mesh records
-from ._ch06.lod import LODChoice, SplitRecord  # noqa: E402
-
-__all__ += ["LODChoice", "SplitRecord"]
-EXERCISES = EXERCISES + (LODChoice, SplitRecord)
-# Section "other simplification methods": vertex clustering, decimation, Hausdorff distance.
-from ._ch06.decimation import ClusterSurvivors, DecimationCriterion, HausdorffByHand  # noqa: E402
-
-__all__ += ["ClusterSurvivors", "DecimationCriterion", "HausdorffByHand"]
-EXERCISES += (ClusterSurvivors, DecimationCriterion, HausdorffByHand)
