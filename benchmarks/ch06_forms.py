@@ -22,7 +22,7 @@ def operations(quick=False):
     count = 2000 if quick else 20000
     rows = [operation_row(
         f"mesh -> point cloud, {count} samples on {len(t)} triangles", count,
-        lambda: forms.sample_surface(v, t, count, seed=0),
+        lambda: forms.sample_point_cloud(v, t, count, seed=0),
         lambda: trimesh.sample.sample_surface(tm, count, seed=0),
         "trimesh.sample.sample_surface", repeat)]
     res = 32 if quick else 64
@@ -44,3 +44,8 @@ def operations(quick=False):
         lambda: forms.voxelize(f, (-1.5,) * 3, (1.5,) * 3, res),
         plain, "plain numpy closed form, same grid", repeat))
     return rows
+
+
+def widgets(quick=False):
+    """The model forms have no explorer: no widget rows."""
+    return []

@@ -392,6 +392,27 @@ def part_dataviz(p):
     p.add("dataviz/pca/cars", dataviz.pca(cars.data, k=2, standardise=True))
 
 
+def part_simplification(p):
+    """Chapter 6: vertex clustering and vertex decimation (a flat grid: every criterion ties at
+    0), the levels of detail and the progressive mesh's meshes."""
+    from course_lib import mesh
+    from course_lib.widgets.simplification import bumpy_sphere
+    sv, sf = bumpy_sphere(2)
+    g = np.stack(np.meshgrid(np.arange(5.0), np.arange(5.0)), -1).reshape(-1, 2)
+    gv = np.column_stack([g, np.zeros(len(g))])
+    gf = np.array([[i * 5 + j, i * 5 + j + 1, i * 5 + j + 6] for i in range(4) for j in range(4)]
+                  + [[i * 5 + j, i * 5 + j + 6, i * 5 + j + 5] for i in range(4) for j in range(4)])
+    for name, (v, f) in (("sphere", (sv, sf)), ("grid", (gv, gf))):
+        for rep in ("mean", "quadric"):
+            c = mesh.vertex_clustering(v, f, cells=4, representative=rep)
+            p.add(f"simplification/clustering/{name}/{rep}", (c.vertices, c.faces))
+        d = mesh.decimate(v, f, max(2, len(f) // 4), feature_angle=np.pi / 2)
+        p.add(f"simplification/decimation/{name}", (d.vertices, d.faces))
+    pm = mesh.ProgressiveMesh(sv, sf, base_faces=len(sf) // 10)
+    for n in (len(sf), len(sf) // 2, len(sf) // 8):
+        p.add(f"simplification/progressive/{n}", pm.mesh(n))
+
+
 def part_widgets(p):
     from course_lib.widgets import camera, simplification, zbuffer
     states = [camera.State(),

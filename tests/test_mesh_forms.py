@@ -104,21 +104,21 @@ def test_voxels_to_mesh_against_scikit_image():
 
 def test_sampled_points_lie_on_the_mesh_and_follow_area():
     v, t = F.tessellate(F.torus_patch, 24, 12, wrap_u=True, wrap_v=True)
-    p, n = F.sample_surface(v, t, 500, seed=3)
+    p, n = F.sample_point_cloud(v, t, 500, seed=3)
     mesh = trimesh.Trimesh(v, t, process=False)
     _, dist, tri = trimesh.proximity.closest_point(mesh, p)
     assert dist.max() < 1e-9
     assert np.allclose(np.abs((n * mesh.face_normals[tri]).sum(1)), 1.0)
     # two triangles of areas 1 and 3: about a quarter of the samples on the first
     v2 = [[0, 0, 0], [1, 0, 0], [0, 2, 0], [3, 0, 1], [0, 0, 1], [0, 2, 1]]
-    p2, _ = F.sample_surface(v2, [[0, 1, 2], [3, 5, 4]], 4000, seed=0)
+    p2, _ = F.sample_point_cloud(v2, [[0, 1, 2], [3, 5, 4]], 4000, seed=0)
     share = np.mean(p2[:, 2] == 0)
     assert abs(share - 0.25) < 0.03
-    assert np.array_equal(F.sample_surface(v, t, 10, seed=5)[0], F.sample_surface(v, t, 10, seed=5)[0])
+    assert np.array_equal(F.sample_point_cloud(v, t, 10, seed=5)[0], F.sample_point_cloud(v, t, 10, seed=5)[0])
     with pytest.raises(ValueError, match="3 vertices"):
-        F.sample_surface(*cube(), 10)
+        F.sample_point_cloud(*cube(), 10)
     with pytest.raises(ValueError, match="count"):
-        F.sample_surface(v, t, 0)
+        F.sample_point_cloud(v, t, 0)
 
 
 def test_tessellated_torus_is_closed_with_genus_one_and_converges():

@@ -18,14 +18,14 @@ The same solid (a torus, say) can be stored in very different ways:
   (:func:`classify_points`) is exact and cheap.
 * **voxels**: the solid sampled on a regular grid (:func:`voxelize`), one bit or value per cell;
   memory grows with the cube of the resolution (:func:`voxel_memory`).
-* **point cloud**: samples on the surface, often with normals (:func:`sample_surface`), what a
+* **point cloud**: samples on the surface, often with normals (:func:`sample_point_cloud`), what a
   3D scanner delivers; no connectivity at all.
 * **boundary representation** (B-rep): faces bounded by loops of edges, with inner loops
   (rings) for holes in a face: :mod:`course_lib.mesh.brep`.
 
 A pipeline converts: implicit to voxels by sampling (:func:`voxelize`), voxels to a mesh by
 marching cubes (:func:`voxels_to_mesh`, which calls :func:`course_lib.scivis.marching_cubes`),
-a mesh to a point cloud by area-weighted sampling (:func:`sample_surface`), a parametric patch to
+a mesh to a point cloud by area-weighted sampling (:func:`sample_point_cloud`), a parametric patch to
 a mesh by tessellation (:func:`tessellate`). Each conversion loses something (exactness,
 connectivity, sharp edges) and is chosen for what the next stage needs. :data:`MODEL_FORMS`
 sums up the properties.
@@ -33,12 +33,12 @@ sums up the properties.
 
 import numpy as np
 
-from .._validate import as_array, as_choice, as_points, as_positive, as_rng, as_scalar, as_whole
+from .._validate import as_array, as_choice, as_points, as_positive, as_scalar, as_whole
 from ._common import _vertices, _face_table
 
 __all__ = ["FORM_PROPERTIES", "MODEL_FORMS", "classify_points", "csg_difference",
            "csg_evaluate", "csg_intersection", "csg_union", "implicit_box", "implicit_normals",
-           "implicit_sphere", "implicit_torus", "sample_surface", "tessellate", "torus_patch",
+           "implicit_sphere", "implicit_torus", "sample_point_cloud", "tessellate", "torus_patch",
            "voxel_memory", "voxelize", "voxels_to_mesh"]
 
 
@@ -428,12 +428,13 @@ def voxels_to_mesh(values, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0), leve
 # Meshes, point clouds and parametric patches
 # ---------------------------------------------------------------------------------------------
 
-def sample_surface(vertices, triangles, count, seed=0):
-    r"""Sample a point cloud on a triangle mesh, uniformly by area, with the faces' normals.
+def sample_point_cloud(vertices, triangles, count, seed=0):
+    r"""A point cloud sampled on a triangle mesh, uniformly by area, with the faces' normals.
 
-    A triangle is picked with probability proportional to its area, then a point in it with
-    the barycentric coordinates :math:`(1 - \sqrt{r_1},\ \sqrt{r_1}(1 - r_2),\ \sqrt{r_1} r_2)`
-    for uniform :math:`r_1, r_2` (uniform over the triangle).
+    The points are :func:`course_lib.mesh.sample_surface`'s (a triangle picked with
+    probability proportional to its area, then a point in it with the barycentric coordinates
+    :math:`(1 - \sqrt{r_1},\ \sqrt{r_1}(1 - r_2),\ \sqrt{r_1} r_2)` for uniform
+    :math:`r_1, r_2`); each gets the unit normal of its triangle.
 
     Parameters
     ----------
@@ -451,10 +452,12 @@ def sample_surface(vertices, triangles, count, seed=0):
     Examples
     --------
     >>> from course_lib.mesh import cube
-    >>> p, n = sample_surface(*cube(triangulated=True), 100, seed=1)
+    >>> p, n = sample_point_cloud(*cube(triangulated=True), 100, seed=1)
     >>> p.shape, bool(np.allclose(np.abs(p).max(axis=1), 1.0))
     ((100, 3), True)
     """
+    from .distances import sample_surface
+
     v = _vertices(vertices)
     corners, starts = _face_table(triangles)
     if np.any(np.diff(starts) != 3):
@@ -463,18 +466,9 @@ def sample_surface(vertices, triangles, count, seed=0):
     if t.size and (t.min() < 0 or t.max() >= len(v)):
         raise ValueError(f"triangles refer to vertex indices outside 0..{len(v) - 1}")
     n = as_whole(count, "count", minimum=1)
-    rng = as_rng(seed)
-    a, b, c = v[t[:, 0]], v[t[:, 1]], v[t[:, 2]]
-    cross = np.cross(b - a, c - a)
-    area = np.linalg.norm(cross, axis=1)
-    if area.sum() <= 0:
-        raise ValueError("triangles have zero total area: nothing to sample")
-    face = rng.choice(len(t), size=n, p=area / area.sum())
-    r1, r2 = np.sqrt(rng.random(n)), rng.random(n)
-    w = np.column_stack([1 - r1, r1 * (1 - r2), r1 * r2])
-    points = w[:, :1] * a[face] + w[:, 1:2] * b[face] + w[:, 2:] * c[face]
-    normals = cross[face] / np.where(area[face] > 0, area[face], 1.0)[:, None]
-    return points, normals
+    points, face = sample_surface(v, t, n, seed)
+    cross = np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])[face]
+    return points, cross / np.linalg.norm(cross, axis=1)[:, None]
 
 
 def torus_patch(u, v, major=1.0, minor=0.4):
