@@ -122,3 +122,11 @@ def test_dragging_a_point_and_a_handle():
     ex.handle_drag.move(end[0] + 0.3, end[1])
     assert np.allclose(ex.state.end_offsets[0], end + [0.3, 0] - ex.state.points[0])
     assert ex.mouse_gestures()[0]["kind"] == "drag"
+
+
+def test_the_tension_slider_works_only_for_the_cardinal_spline():
+    ex = W.InterpolationExplorer()
+    ex.method.value = "natural spline"
+    assert ex.tension.disabled
+    ex.method.value = "cardinal"
+    assert not ex.tension.disabled

@@ -195,7 +195,7 @@ class InterpolationExplorer(Explorer):
                                            self._on_handle, radius=9.0)
         self.method = w.ToggleButtons(options=METHODS, value=self.state.method,
                                       layout=w.Layout(width="330px"),
-                                      style={"button_width": "104px"})
+                                      style={"button_width": _style.button_width(*METHODS)})
         self.params = labelled(w.Dropdown, "parameters", options=list(ip.PARAMETERIZATIONS),
                                value=self.state.params)
         self.tension = slider("tension s", self.state.tension, 0.0, 1.5, 0.05)
@@ -246,4 +246,5 @@ class InterpolationExplorer(Explorer):
         if self.handle_drag.active is None:
             self.handle_drag.set_points(s["handles"][s["draggable"]])
         self.comb.set_data(*(s["comb"].T if self.state.show_comb else ([], [])))
+        self.tension.disabled = self.state.method != "cardinal"      # only it has a tension
         self.info.value = s["text"]
