@@ -4,7 +4,7 @@ The exercises are in one module per topic of this package (normalisation, transf
 colour maps, kinds of colour map); import them from :mod:`course_lib.exercises.ch10`.
 """
 from ... import format as fmt
-from ..core import DrawnExercise
+from ..core import UNANSWERED, DrawnExercise, Feedback, has_placeholder
 
 _num = fmt.number
 _vec = fmt.vector_latex
@@ -25,3 +25,16 @@ class _Chapter10(DrawnExercise):
 
     vector_like = False
     reject_bool = True
+
+    def _menu_choice(self, answer, aliases=None):
+        """The entry of ``self.menu`` a student's string names, as ``(key, None)``; or
+        ``(None, feedback)`` for an unanswered or unreadable answer. Case and spaces around
+        and between words do not matter; `aliases` maps other spellings to menu entries."""
+        if has_placeholder(answer):
+            return None, Feedback("unanswered", UNANSWERED)
+        key = " ".join(answer.strip().lower().split()) if isinstance(answer, str) else None
+        key = (aliases or {}).get(key, key)
+        if key not in self.menu:
+            return None, Feedback("invalid", "Answer with one of the strings "
+                                  + ", ".join(f"`'{k}'`" for k in self.menu) + ".", "unreadable")
+        return key, None

@@ -334,12 +334,9 @@ class ChooseGridKind(_Chapter10):
         return Worked(steps, kind)
 
     def _check(self, answer):
-        if has_placeholder(answer):
-            return Feedback("unanswered", UNANSWERED)
-        if not isinstance(answer, str) or answer.strip().lower() not in self.menu:
-            return Feedback("invalid", "Answer with one of the strings "
-                            + ", ".join(f"`'{k}'`" for k in self.menu) + ".", "unreadable")
-        kind = answer.strip().lower()
+        kind, unreadable = self._menu_choice(answer)
+        if unreadable is not None:          # (a Feedback is falsy unless correct)
+            return unreadable
         if kind == self.expected:
             return Feedback("correct", f"Right: {_KIND_WORDS[kind]}.")
         return Feedback("wrong", f"Not {kind}: {_KIND_WORDS[kind]}. Here, "

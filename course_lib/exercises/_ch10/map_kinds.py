@@ -2,7 +2,7 @@
 
 Part of :mod:`course_lib.exercises.ch10`, which imports every exercise from here.
 """
-from ..core import UNANSWERED, Feedback, Worked, data_note, has_placeholder, pick
+from ..core import Feedback, Worked, data_note, pick
 from . import _Chapter10
 
 __all__ = [
@@ -170,12 +170,9 @@ class ChooseMapKind(_Chapter10):
         return Worked(steps, kind)
 
     def _check(self, answer):
-        if has_placeholder(answer):
-            return Feedback("unanswered", UNANSWERED)
-        if not isinstance(answer, str) or answer.strip().lower() not in self.menu:
-            return Feedback("invalid", "Answer with one of the strings "
-                            + ", ".join(f"`'{k}'`" for k in self.menu) + ".", "unreadable")
-        kind = answer.strip().lower()
+        kind, unreadable = self._menu_choice(answer)
+        if unreadable is not None:          # (a Feedback is falsy unless correct)
+            return unreadable
         if kind == self.expected:
             return Feedback("correct", f"Right: these are {_KIND_REASONS[kind]}.")
         return Feedback("wrong", f"A {kind} map is meant for {_KIND_REASONS[kind].split(':')[0]}."

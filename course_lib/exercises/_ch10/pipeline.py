@@ -364,14 +364,9 @@ class _ScenarioChoice(_Chapter10):
         raise NotImplementedError
 
     def _check(self, answer):
-        if has_placeholder(answer):
-            return Feedback("unanswered", UNANSWERED)
-        aliases = getattr(self, "aliases", {})
-        key = " ".join(answer.strip().lower().split()) if isinstance(answer, str) else None
-        key = aliases.get(key, key)
-        if key not in self.menu:
-            return Feedback("invalid", "Answer with one of the strings "
-                            + ", ".join(f"`'{k}'`" for k in self.menu) + ".", "unreadable")
+        key, unreadable = self._menu_choice(answer, getattr(self, "aliases", None))
+        if unreadable is not None:          # (a Feedback is falsy unless correct)
+            return unreadable
         if key == self.expected:
             return Feedback("correct", f"Right: {self._reason(key)}")
         return Feedback("wrong", f"“{key}” would be {self._describe(key)}. Here: "
