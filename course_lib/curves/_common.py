@@ -78,6 +78,17 @@ def _knot_vector(value, degree, n_control=None, name="knots"):
     if len(u) != wanted:
         raise ValueError(f"{name} must have n_control + degree + 1 = {n_control} + {p} + 1 = "
                          f"{wanted} values, got {len(u)}")
+    _knot_order(u, p, name)
+    if not u[p] < u[n_control]:
+        raise ValueError(f"{name} leave an empty domain: {name}[degree] = {name}[{p}] = "
+                         f"{float(u[p])!r} must be less than {name}[n_control] = "
+                         f"{name}[{n_control}] = {float(u[n_control])!r}")
+    return u, n_control
+
+
+def _knot_order(u, p, name="knots"):
+    """Knots `u` of degree `p` non-decreasing, no value repeated more than p + 1 times (the
+    checks every knot vector needs, with a curve's domain or without)."""
     step = np.diff(u)
     if np.any(step < 0):
         i = int(np.argmax(step < 0))
@@ -89,11 +100,6 @@ def _knot_vector(value, degree, n_control=None, name="knots"):
         raise ValueError(f"{name} must not repeat a value more than degree + 1 = {p + 1} times, "
                          f"but {float(values[j])!r} appears {counts[j]} times (a basis function "
                          "would vanish everywhere)")
-    if not u[p] < u[n_control]:
-        raise ValueError(f"{name} leave an empty domain: {name}[degree] = {name}[{p}] = "
-                         f"{float(u[p])!r} must be less than {name}[n_control] = "
-                         f"{name}[{n_control}] = {float(u[n_control])!r}")
-    return u, n_control
 
 
 def _control_weights(value, n_control, name="weights"):

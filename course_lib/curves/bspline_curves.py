@@ -3,7 +3,7 @@
 import numpy as np
 
 from .._validate import as_array, as_scalar, as_whole
-from ._common import _control_points, _degree, _knot_vector, _parameters
+from ._common import _control_points, _degree, _knot_order, _knot_vector, _parameters
 
 __all__ = ["bspline", "bspline_basis", "bspline_basis_derivative", "bspline_derivative",
     "clamped_knots", "de_boor", "domain", "find_span", "insert_knot", "uniform_knots"]
@@ -188,17 +188,7 @@ def _basis_knots(value, degree, name="knots"):
     if n >= p + 1 and u[p] < u[n]:
         _knot_vector(u, p, name=name)           # the full curve checks (same messages as before)
         return u, n, True
-    step = np.diff(u)
-    if np.any(step < 0):
-        i = int(np.argmax(step < 0))
-        raise ValueError(f"{name} must be non-decreasing, but {name}[{i}] = {float(u[i])!r} > "
-                         f"{name}[{i + 1}] = {float(u[i + 1])!r}")
-    values, counts = np.unique(u, return_counts=True)
-    if counts.max() > p + 1:
-        j = int(np.argmax(counts))
-        raise ValueError(f"{name} must not repeat a value more than degree + 1 = {p + 1} times, "
-                         f"but {float(values[j])!r} appears {counts[j]} times (a basis function "
-                         "would vanish everywhere)")
+    _knot_order(u, p, name)
     return u, n, False
 
 
