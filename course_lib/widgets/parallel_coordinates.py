@@ -202,16 +202,12 @@ def _pc_raster(name, order, flipped, size):
     return lines, md.PolylineRaster(lines, size[0], size[1], extent=(0.0, 1.0, 0.0, 1.0))
 
 
-def _layer(counts, colour, gain, opaque=False):
+def _layer(counts, colour, gain):
     """RGBA uint8 image of a count image: the colour, opacity 1 - exp(-gain * count)."""
     alpha = 1.0 - np.exp(-gain * counts)
     out = np.empty(counts.shape + (4,), dtype=np.uint8)
-    if opaque:                                   # on white
-        out[..., :3] = (255 - alpha[..., None] * (255 - colour)).astype(np.uint8)
-        out[..., 3] = 255
-    else:
-        out[..., :3] = colour.astype(np.uint8)
-        out[..., 3] = (255 * alpha).astype(np.uint8)
+    out[..., :3] = colour.astype(np.uint8)
+    out[..., 3] = (255 * alpha).astype(np.uint8)
     return out
 
 
@@ -347,15 +343,13 @@ class ParallelCoordinatesExplorer(Explorer):
         self._drag = None
         self.fig = draw.figure(figsize=(5.3, 3.0))
         self.ax = self.fig.add_axes((0.02, 0.07, 0.96, 0.82))
-        self.ax.set(xlim=(-0.07, 1.07), ylim=(-0.1, 1.1))
         self.ax.axis("off")
+        # limits: x in [-0.07, 1.07], y in [-0.1, 1.1], adjusted to whole pixels
         self.state.image_size = _pixel_exact_limits(self.ax, (1.14, 1.2), (0.07, 0.1))
-        extent = (0.0, 1.0, 0.0, 1.0)
-        blank = np.zeros((2, 2, 4), np.uint8)
-        self.base = self.ax.imshow(blank, extent=extent, origin="lower", aspect="auto",
-                                   interpolation="nearest", zorder=1)
-        self.highlight = self.ax.imshow(blank, extent=extent, origin="lower", aspect="auto",
-                                        interpolation="nearest", zorder=2)
+        # the grey layer and the selected one, painted together into one opaque image (_draw)
+        self.highlight = self.ax.imshow(np.zeros((2, 2, 3), np.uint8), extent=(0.0, 1.0, 0.0, 1.0),
+                                        origin="lower", aspect="auto", interpolation="nearest",
+                                        zorder=2)
         from matplotlib.collections import LineCollection, PolyCollection
 
         self.axis_lines = LineCollection([], colors="0.15", linewidths=1.0, zorder=3)
@@ -553,8 +547,6 @@ class ParallelCoordinatesExplorer(Explorer):
 
     def _static(self, s):
         """Order, flips or data set changed: redraw the grey layer, axes and labels fully."""
-        self.base.set_data(s["base"])
-        self.base.set_visible(False)             # painted under the highlight, opaque (_draw)
         self.axis_lines.set_segments([[(x, 0), (x, 1)] for x in s["axis_x"]])
         for text in self.names + self.lows + self.highs:
             text.remove()
