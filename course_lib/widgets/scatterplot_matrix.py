@@ -353,7 +353,7 @@ class LinkedExplorers(Explorer):
     pc : ParallelCoordinatesExplorer, optional
         A new one if not given.
     splom : ScatterplotMatrixExplorer, optional
-        A new one sharing `pc`'s selection if not given (:func:`link` checks a given one).
+        A new one sharing `pc`'s selection if not given; a given one must share it.
 
     Examples
     --------
@@ -372,7 +372,11 @@ class LinkedExplorers(Explorer):
         import ipywidgets as w
 
         pc = pc or ParallelCoordinatesExplorer()
-        splom = splom or ScatterplotMatrixExplorer(pc.selection)
+        if splom is None:
+            splom = ScatterplotMatrixExplorer(pc.selection)
+        elif splom.selection is not pc.selection:
+            raise ValueError("splom must share pc's selection: build it as "
+                             "ScatterplotMatrixExplorer(pc.selection), or leave it out")
         self.pc, self.splom = pc, splom
         self.fig = splom.fig                  # the last canvas: where the gestures happen
         self.blitter = None
@@ -428,10 +432,4 @@ def link(pc=None, splom=None):
     >>> int(both.splom.current["mask"].sum()) == int(both.pc.current["mask"].sum())
     True
     """
-    pc = pc or ParallelCoordinatesExplorer()
-    if splom is None:
-        splom = ScatterplotMatrixExplorer(pc.selection)
-    elif splom.selection is not pc.selection:
-        raise ValueError("splom must share pc's selection: build it as "
-                         "ScatterplotMatrixExplorer(pc.selection), or leave it out")
     return LinkedExplorers(pc, splom)
