@@ -34,6 +34,7 @@ import numpy as np
 
 from .._validate import as_array, as_choice, as_scalar
 from ._common import _control_points, _parameters
+from .matrix_form import basis_matrix, power_row
 
 __all__ = [
     "cardinal_tangents",
@@ -197,12 +198,6 @@ def polynomial_curve(points, t, params="uniform"):
 # Hermite cubics
 # ---------------------------------------------------------------------------------------------
 
-_HERMITE = np.array([[2.0, -3.0, 0.0, 1.0],       # H0 = 2t^3 - 3t^2 + 1      (weight of P0)
-                     [-2.0, 3.0, 0.0, 0.0],       # H1 = -2t^3 + 3t^2         (weight of P1)
-                     [1.0, -2.0, 1.0, 0.0],       # H2 = t^3 - 2t^2 + t       (weight of T0)
-                     [1.0, -1.0, 0.0, 0.0]])      # H3 = t^3 - t^2            (weight of T1)
-
-
 def hermite_basis(t, derivative=0):
     r"""The four cubic Hermite basis functions at local parameter(s) `t` in [0, 1].
 
@@ -229,11 +224,7 @@ def hermite_basis(t, derivative=0):
     """
     t = _parameters(t, 0.0, 1.0)
     derivative = int(as_choice(derivative, "derivative", (0, 1, 2)))
-    c = _HERMITE
-    for _ in range(derivative):
-        c = np.column_stack([np.zeros(4), c[:, :-1] * [3.0, 2.0, 1.0]])
-    powers = t[..., None] ** np.arange(3, -1, -1)
-    return powers @ c.T
+    return power_row(t, derivative) @ basis_matrix("hermite")     # T M: [H0, H1, H2, H3]
 
 
 def hermite_segment(p0, p1, t0, t1, t):
