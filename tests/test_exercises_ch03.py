@@ -7,6 +7,8 @@ placeholders are "unanswered", garbage is "invalid", and every anticipated mista
 from the question's attributes, is named by its diagnosis. Nothing is copied from the checker's
 output.
 """
+import importlib
+from pathlib import Path
 import math
 
 import numpy as np
@@ -524,3 +526,14 @@ def test_a_fresh_seed_is_a_fresh_exercise(name):
     cls, (solve, _) = getattr(ch03, name), SPECS[name]
     answers = {harness.answer_key(solve(cls(seed=seed))[0]) for seed in range(300)}
     assert len(answers) >= MIN_VARIANTS, (name, len(answers))
+
+
+def test_every_exercise_is_tested_in_one_file():
+    """Together the chapter's exercise test files test every exercise of ``ch03.EXERCISES``,
+    each in exactly one file (this file the older topics, tests/test_exercises_ch03_*.py the
+    newer ones)."""
+    tested = list(SPECS)
+    for path in sorted(Path(__file__).parent.glob("test_exercises_ch03_*.py")):
+        tested += list(importlib.import_module(path.stem).SPECS)
+    assert sorted(tested) == sorted(cls.__name__ for cls in ch03.EXERCISES)
+    assert len(ch03.EXERCISES) >= 10

@@ -6,6 +6,8 @@ single precision, or closed forms typed out below, never the course_lib function
 calls) is accepted, placeholders are "unanswered", garbage is "invalid", and every anticipated
 mistake, rebuilt here from the question's attributes, is named by its diagnosis.
 """
+import importlib
+from pathlib import Path
 import math
 
 import numpy as np
@@ -476,3 +478,14 @@ def test_a_fresh_seed_is_a_fresh_exercise(name):
     cls, (solve, _) = getattr(ch04, name), SPECS[name]
     answers = {harness.answer_key(solve(cls(seed=seed))[0]) for seed in range(300)}
     assert len(answers) >= MIN_VARIANTS, (name, len(answers))
+
+
+def test_every_exercise_is_tested_in_one_file():
+    """Together the chapter's exercise test files test every exercise of ``ch04.EXERCISES``,
+    each in exactly one file (this file the older topics, tests/test_exercises_ch04_*.py the
+    newer ones)."""
+    tested = list(SPECS)
+    for path in sorted(Path(__file__).parent.glob("test_exercises_ch04_*.py")):
+        tested += list(importlib.import_module(path.stem).SPECS)
+    assert sorted(tested) == sorted(cls.__name__ for cls in ch04.EXERCISES)
+    assert len(ch04.EXERCISES) >= 10

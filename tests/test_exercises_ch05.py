@@ -7,6 +7,8 @@ the course_lib or ch05 function the checker calls) is accepted, placeholders are
 garbage is "invalid", and every anticipated mistake, rebuilt here from the question's
 attributes, is named by its diagnosis.
 """
+import importlib
+from pathlib import Path
 import math
 from fractions import Fraction
 
@@ -787,3 +789,14 @@ def test_other_exercises_never_land_on_a_boundary_case():
     for ex in exercises("PaintersOrder"):                          # no ties in the keys
         keys = [min(d) for d in ex.depths]
         assert len(set(keys)) == len(keys)
+
+
+def test_every_exercise_is_tested_in_one_file():
+    """Together the chapter's exercise test files test every exercise of ``ch05.EXERCISES``,
+    each in exactly one file (this file the older topics, tests/test_exercises_ch05_*.py the
+    newer ones)."""
+    tested = list(SPECS)
+    for path in sorted(Path(__file__).parent.glob("test_exercises_ch05_*.py")):
+        tested += list(importlib.import_module(path.stem).SPECS)
+    assert sorted(tested) == sorted(cls.__name__ for cls in ch05.EXERCISES)
+    assert len(ch05.EXERCISES) >= 10

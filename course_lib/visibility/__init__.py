@@ -143,3 +143,11 @@ __all__ = [
     "zbuffer",
     "zbuffer_steps",
 ]
+
+# Issue 21: hierarchical occlusion (z-pyramid, occlusion queries, occlusion maps) and a 2D BSP
+# tree of segments for practice by hand (each module declares its __all__)
+from . import bsp2d, hierarchical  # noqa: E402
+from .hierarchical import *  # noqa: E402,F401,F403
+from .bsp2d import *  # noqa: E402,F401,F403
+
+__all__ = sorted(__all__ + hierarchical.__all__ + bsp2d.__all__)

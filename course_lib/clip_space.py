@@ -1,0 +1,2 @@
+"""clip_space (being written)."""
+__all__ = []

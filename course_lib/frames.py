@@ -1,0 +1,2 @@
+"""frames (being written)."""
+__all__ = []

@@ -1,0 +1,2 @@
+"""projections (being written)."""
+__all__ = []

@@ -1,0 +1,2 @@
+"""bsp2d (being written)."""
+__all__ = []

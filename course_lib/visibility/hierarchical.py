@@ -1,0 +1,2 @@
+"""hierarchical (being written)."""
+__all__ = []
