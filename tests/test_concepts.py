@@ -1193,3 +1193,37 @@ def test_fact_ch06_decimation():
     assert directed_hausdorff(patch, big)[0] == 0 and directed_hausdorff(big, patch)[0] > 1
     e = np.array([[0, 1], [1, 0], [0, 16], [16, 0]])
     assert np.all(full_edge_collapse_cost(v, f, e)[1] <= half_edge_collapse_cost(v, f, e) + 1e-12)
+
+
+def test_fact_ch03_normals_frames():
+    """The inverse transpose keeps normals perpendicular (A n does not under a non-uniform
+    scale), A works for a rotation times a uniform scale, world-to-frame is [R^T, -R^T o], the
+    exam's 3w matrix is a 90 degree rotation, and I - 2 n n^T is trimesh's reflection."""
+    from trimesh import transformations as tt
+    assert answer_text("ch03-normal-matrix").startswith("$(A^{-1})^T$")
+    A = np.array([[2.0, 0.0], [0.0, 0.5]])
+    t, n = np.array([1.0, 1.0]), np.array([1.0, -1.0])           # n . t = 0
+    assert abs((np.linalg.inv(A).T @ n) @ (A @ t)) < 1e-12
+    assert abs((A @ n) @ (A @ t)) > 1                              # the naive normal is off
+    S = np.array([[1.0, 0.7], [0.0, 1.0]])                         # a shear: A^-1 n is off too
+    assert abs((np.linalg.inv(S) @ n) @ (S @ t)) > 0.1
+    assert truth("ch03-normal-uniform-scale")
+    B = 3.0 * Rotation.from_euler("z", 0.4).as_matrix()
+    for nn in RNG.normal(size=(5, 3)):
+        a, b = B @ nn, np.linalg.inv(B).T @ nn
+        assert np.allclose(np.cross(a, b), 0, atol=1e-9) and a @ b > 0
+    assert answer_text("ch03-world-to-frame").startswith("$\\begin{bmatrix} R^T & -R^T o")
+    R, o = Rotation.from_euler("xyz", [0.3, -0.2, 0.9]).as_matrix(), np.array([1.0, 2.0, 3.0])
+    F = np.eye(4)
+    F[:3, :3], F[:3, 3] = R, o
+    W = np.eye(4)
+    W[:3, :3], W[:3, 3] = R.T, -R.T @ o
+    assert np.allclose(W, np.linalg.inv(F))
+    assert truth("ch03-homogeneous-multiple")
+    M = np.array([[0, -3, 0], [3, 0, 0], [0, 0, 3]], dtype=float)
+    x, y = 2.0, 5.0
+    image = M @ [x, y, 1]
+    assert np.allclose(image[:2] / image[2], [-y, x])
+    assert answer_text("ch03-mirror-plane") == "$I - 2 n n^T$"
+    u = np.array([2.0, 3.0, 6.0]) / 7
+    assert np.allclose(tt.reflection_matrix([0, 0, 0], u)[:3, :3], np.eye(3) - 2 * np.outer(u, u))

@@ -66,3 +66,12 @@ EXERCISES = (
     ComposeRotationsWithQuaternions,
     SlerpMidpoint,
 )
+
+# Issue 21: normals, change of frame, scaling about a point, w != 1, mirroring about a plane
+from ._ch03.frames import (FrameCoordinates, HomogeneousRotationAngle, MirrorAboutPlane,
+                           NormalUnderShear, ScaleAboutPoint)
+
+__all__ += ["FrameCoordinates", "HomogeneousRotationAngle", "MirrorAboutPlane",
+            "NormalUnderShear", "ScaleAboutPoint"]
+EXERCISES += (NormalUnderShear, FrameCoordinates, ScaleAboutPoint, HomogeneousRotationAngle,
+              MirrorAboutPlane)

@@ -109,4 +109,62 @@ QUESTIONS = [
          "still needs a vector or a homogeneous matrix."),
         ("Their product is commutative", "It is not: $q_1 q_2 \\ne q_2 q_1$ in general."),
         correct=1),
+    # Issue 21: normals, change of frame, homogeneous w != 1, mirroring about a plane
+    _mc(3, "ch03-normal-matrix",
+        "A mesh is transformed by an affine map with linear part $A$. Which matrix gives the "
+        "transformed normals (up to length)?",
+        ("$A$ itself", "$A$ maps tangents; with a non-uniform scale or a shear $A\\,n$ leans "
+         "off the surface (stretch a circle into an ellipse: $A\\,n$ no longer points along the "
+         "ellipse's gradient)."),
+        ("$A^{-1}$", "The inverse alone is wrong too: only for a symmetric $A$ (a pure scale) "
+         "does it equal the inverse transpose."),
+        ("$(A^{-1})^T$, the inverse transpose", "For every tangent $t \\perp n$: "
+         "$(A^{-T} n) \\cdot (A t) = n^T A^{-1} A\\, t = n \\cdot t = 0$, so $A^{-T} n$ stays "
+         "perpendicular to the transformed surface. Renormalise afterwards."),
+        ("The full $4 \\times 4$ matrix applied to $(n, 1)$", "A normal is a direction: the "
+         "translation must not act on it ($w = 0$), and the linear part still needs the "
+         "inverse transpose."),
+        correct=2),
+    _tf(3, "ch03-normal-uniform-scale",
+        "If $A$ is a rotation times a **uniform** scale, transforming normals with $A$ itself "
+        "gives the right directions.", True,
+        "Then $A^T A = k^2 I$, so $A^{-T} = A / k^2$: the same directions, only the length "
+        "differs (renormalise). Non-uniform scales and shears are what break $A\\,n$.",
+        "It does work: $A^T A = k^2 I$ gives $A^{-T} = A / k^2$, a positive multiple of $A$, "
+        "so $A\\,n$ has the right direction; only its length changes."),
+    _mc(3, "ch03-world-to-frame",
+        "A frame has origin $o$ and orthonormal axes $u, v, w$ (the columns of $R$). Which "
+        "matrix takes world coordinates to frame coordinates?",
+        ("$\\begin{bmatrix} R & o \\\\ 0 & 1 \\end{bmatrix}$", "That is the frame-to-world "
+         "matrix: it maps the frame's coordinates $(a, b, c)$ to $o + a u + b v + c w$."),
+        ("$\\begin{bmatrix} R^T & -R^T o \\\\ 0 & 1 \\end{bmatrix}$", "The inverse of the "
+         "frame-to-world matrix: a coordinate is the dot product of an axis with $p - o$, "
+         "$R^T (p - o) = R^T p - R^T o$; for orthonormal axes $R^{-1} = R^T$."),
+        ("$\\begin{bmatrix} R^T & -o \\\\ 0 & 1 \\end{bmatrix}$", "The translation column "
+         "must be rotated too: $R^T (p - o)$ gives $-R^T o$, not $-o$."),
+        ("$\\begin{bmatrix} R & -o \\\\ 0 & 1 \\end{bmatrix}$", "It neither inverts the "
+         "rotation ($R$ instead of $R^T$) nor rotates the origin term."),
+        correct=1),
+    _tf(3, "ch03-homogeneous-multiple",
+        "The 2D homogeneous matrix $\\begin{bmatrix} 0 & -3 & 0 \\\\ 3 & 0 & 0 \\\\ 0 & 0 & 3 "
+        "\\end{bmatrix}$ is a rotation by $90^\\circ$, not a scaling by 3.", True,
+        "It maps $(x, y, 1)$ to $(-3y, 3x, 3)$, the same point as $(-y, x, 1)$: dividing by "
+        "$w = 3$ leaves $R(90^\\circ)$. (Read as a 3D linear map it would be a rotation about "
+        "$z$ times a uniform scale 3.)",
+        "It is a rotation: $(x, y, 1) \\mapsto (-3y, 3x, 3) \\equiv (-y, x, 1)$. Every entry, "
+        "$w$ included, is multiplied by 3, and a homogeneous point does not change when all "
+        "its coordinates are multiplied by the same non-zero number."),
+    _mc(3, "ch03-mirror-plane",
+        "Which matrix mirrors 3D space about the plane through the origin with **unit** normal "
+        "$n$?",
+        ("$I - n n^T$", "That projects onto the plane: it removes the normal component once, "
+         "and is singular."),
+        ("$I - 2 n n^T$", "It removes the normal component twice, flipping its sign, and keeps "
+         "the plane's vectors: a Householder reflection, symmetric and orthogonal with "
+         "determinant $-1$, its own inverse."),
+        ("$2 n n^T - I$", "That is the mirror about the **line** along $n$ (a half turn about "
+         "it in 3D): it keeps $n$ and negates the plane's vectors."),
+        ("$-I$", "That is the point reflection through the origin: it negates every "
+         "vector, the plane's ones too."),
+        correct=1),
 ]
