@@ -63,3 +63,16 @@ def test_every_control_changes_the_picture_and_text():
                        equal_nan=True)
     assert f"{s['worst_deg']:.1f}" in ex.title.get_text()
     assert math.isfinite(s["worst_deg"])
+
+
+def test_the_worst_sample_is_ringed_and_hidden_without_error():
+    ex = W.NormalsExplorer(W.State(sx=2.0, sy=0.5, shear=0.7))
+    s = W.scene(ex.state)
+    errors = []
+    for p, nn, nc in zip(s["base"], s["naive"], s["correct"]):
+        errors.append(math.degrees(math.acos(max(-1.0, min(1.0, float(nn @ nc))))))
+    ringed = np.array(ex.worst_marker.get_xydata())[0]
+    k = int(np.argmin(np.linalg.norm(s["base"] - ringed, axis=1)))
+    assert errors[k] == pytest.approx(max(errors), abs=1e-6)
+    ex.sx.value, ex.sy.value, ex.shear.value = 1.0, 1.0, 0.0
+    assert len(ex.worst_marker.get_xydata()) == 0

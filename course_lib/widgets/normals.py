@@ -20,7 +20,7 @@ from ._base import Explorer, bind, panel, slider
 __all__ = ["SHAPES", "NormalsExplorer", "State", "scene"]
 
 SHAPES = ("circle", "polygon")
-LENGTH = 0.55                                       # drawn length of a normal
+LENGTH = 0.8                                        # drawn length of a normal
 _CIRCLE_T = np.linspace(0.0, 2 * np.pi, 16, endpoint=False) + np.pi / 16
 _OUTLINE_T = np.linspace(0.0, 2 * np.pi, 121)
 _POLYGON = np.array([[-1.0, -0.8], [1.1, -0.8], [1.1, 0.1], [0.2, 1.0], [-1.0, 0.6]])
@@ -68,6 +68,12 @@ def _segments(base, direction):
     return out
 
 
+def _rounded_dot(a, b):
+    """The largest |a . b| of paired rows, as text; rounding noise below 1e-12 shown as 0."""
+    worst = float(np.abs(np.sum(a * b, axis=1)).max())
+    return "0" if worst < 1e-12 else f"{worst:.2g}"
+
+
 def scene(state):
     """Pure part: the transformed shape, the naive and the correct normals, the angle errors.
 
@@ -93,16 +99,19 @@ def scene(state):
     new_tangents = _unit(tangents @ A.T)
     errors = np.degrees(np.arccos(np.clip(np.sum(naive * correct, axis=1), -1.0, 1.0)))
     worst = float(errors.max())
+    # symmetric samples tie: round first, so that the first of them wins on every CPU
+    worst_index = int(np.argmax(np.round(errors, 6)))
     text = (f"A = H({h:g}) S({sx:g}, {sy:g}) = [[{A[0, 0]:.3g}, {A[0, 1]:.3g}], "
             f"[{A[1, 0]:.3g}, {A[1, 1]:.3g}]]. "
             f"<b style='color:#c62828'>Naive A n</b>: worst {worst:.1f}° off the perpendicular. "
             f"<b style='color:#2e7d32'>A<sup>−T</sup> n</b>: perpendicular to the transformed "
-            f"tangents (largest |n'·t'| = {np.abs(np.sum(correct * new_tangents, 1)).max():.1e}).")
+            f"tangents (largest |n'·t'| = {_rounded_dot(correct, new_tangents)}).")
     if frames.preserves_normals(A):
         text += " A is a rotation/mirror times a uniform scale here, so A n is right too."
     return {"A": A, "outline": outline, "moved_outline": moved_outline, "base": base,
             "naive": naive, "correct": correct, "tangents": new_tangents, "errors": errors,
-            "worst_deg": worst, "naive_lines": _segments(base, naive),
+            "worst_deg": worst, "worst_index": worst_index,
+            "naive_lines": _segments(base, naive),
             "correct_lines": _segments(base, correct), "text": text}
 
 
@@ -129,9 +138,9 @@ class NormalsExplorer(Explorer):
 
         self.state = state or State()
         s = scene(self.state)
-        self.fig = draw.figure(figsize=(4.2, 3.4))
-        ax = self.fig.add_axes((0.1, 0.08, 0.86, 0.8))
-        ax.set(xlim=(-4.2, 4.2), ylim=(-3.0, 3.0), aspect="equal")
+        self.fig = draw.figure(figsize=(4.8, 3.6))
+        ax = self.fig.add_axes((0.09, 0.1, 0.88, 0.8))
+        ax.set(xlim=(-6.2, 6.2), ylim=(-4.2, 4.2), aspect="equal")
         ax.set_xlabel("x", fontsize=8)
         ax.set_ylabel("y", fontsize=8)
         ax.tick_params(labelsize=7)
@@ -140,11 +149,14 @@ class NormalsExplorer(Explorer):
         (self.naive_line,) = ax.plot([], [], color="#c62828", lw=1.8, label="A n (naive)")
         (self.correct_line,) = ax.plot([], [], color="#2e7d32", lw=1.8,
                                        label="A⁻ᵀ n (right)")
+        (self.worst_marker,) = ax.plot([], [], "o", mfc="none", mec="#c62828", mew=1.5, ms=12,
+                                       label="worst naive normal")
         self.title = ax.set_title("", fontsize=9)
         _style.legend(ax, loc="lower right", fontsize=7, handlelength=1.5)
         _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.original_line, self.shape_line,
-                                               self.naive_line, self.correct_line, self.title])
+                                               self.naive_line, self.correct_line,
+                                               self.worst_marker, self.title])
         self.shape = w.ToggleButtons(options=SHAPES, value=self.state.shape,
                                      style={"button_width": _style.button_width(*SHAPES)})
         self.sx = slider("s_x", self.state.sx, 0.25, 3.0, 0.05)
@@ -168,5 +180,9 @@ class NormalsExplorer(Explorer):
         self.shape_line.set_data(*s["moved_outline"].T)
         self.naive_line.set_data(*s["naive_lines"].T)
         self.correct_line.set_data(*s["correct_lines"].T)
+        if s["worst_deg"] > 0.05:                 # ring the sample whose naive normal is worst
+            self.worst_marker.set_data(*s["base"][s["worst_index"]][:, None])
+        else:
+            self.worst_marker.set_data([], [])
         self.title.set_text(f"worst naive normal error: {s['worst_deg']:.1f}°")
         self.info.value = s["text"]
