@@ -139,7 +139,7 @@ class NormalsExplorer(Explorer):
         self.state = state or State()
         s = scene(self.state)
         self.fig = draw.figure(figsize=(4.8, 3.6))
-        ax = self.fig.add_axes((0.09, 0.1, 0.88, 0.8))
+        ax = self.fig.add_axes((0.1, 0.13, 0.87, 0.78))
         ax.set(xlim=(-6.2, 6.2), ylim=(-4.2, 4.2), aspect="equal")
         ax.set_xlabel("x", fontsize=8)
         ax.set_ylabel("y", fontsize=8)

@@ -127,8 +127,8 @@ class NormalUnderShear(DrawnExercise):
             rf"A line in the plane has the normal $n = {_vec(self.n)}$. The whole plane is "
             rf"transformed by the homogeneous matrix $M = {_mat(self.M)}$ (a shear and a "
             r"scale, then a translation)." "\n\n"
-            r"Give the **unit** normal $n'$ of the transformed line, pointing to the same side "
-            r"as the transformed $n$ (the side the image of $n$'s side lands on)." "\n\n"
+            r"Give the **unit** normal $n'$ of the transformed line, on the side where the "
+            r"points that $n$ pointed to end up." "\n\n"
             r"**Answer:** a list of 2 numbers `[x, y]`. " + DECIMALS + "\n\n"
             + data_note("M", "A", "n"))
 
