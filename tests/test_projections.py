@@ -92,9 +92,6 @@ def test_box_axes_change_the_count():
 
 # ------------------------------------------------------------------------------- classification
 def test_classify_hand_typed_and_scipy_matrices():
-    iso = _ortho_from_rotation(Rotation.from_euler("xz", [-(90 - np.degrees(np.arctan(1 / np.sqrt(2)))), -45],
-                                                   degrees=True))
-    # scipy's extrinsic "xz": first about x then about z; we need Rz first: use intrinsic form
     iso = _ortho_from_rotation(Rotation.from_euler("x", np.arctan(1 / np.sqrt(2)) - np.pi / 2)
                                * Rotation.from_euler("z", -np.pi / 4))
     assert pj.classify_projection(iso)["name"] == "isometric"
