@@ -41,12 +41,12 @@ __all__ = [
     "isometric",
     "multiview",
     "oblique_projection",
+    "orbit_rotation",
     "perspective_view",
     "preserves_table",
     "principal_vanishing_points",
     "project_onto_plane",
     "vanishing_point",
-    "view_rotation",
 ]
 
 #: The isometric elevation: arctan(1/sqrt 2) = arcsin(1/sqrt 3) ≈ 35.264°.
@@ -88,7 +88,7 @@ def preserves_table():
     return "\n".join(lines)
 
 
-def view_rotation(azimuth, elevation):
+def orbit_rotation(azimuth, elevation):
     r"""The rotation from the world (z up) into a view frame (x right, y up, z to the viewer).
 
     The viewer sits in the direction :math:`v = (\sin a \cos e,\ -\cos a \cos e,\ \sin e)` from
@@ -109,7 +109,7 @@ def view_rotation(azimuth, elevation):
     Examples
     --------
     >>> import numpy as np
-    >>> np.round(view_rotation(0.0, 0.0) @ [0, 0, 1, 0], 12)     # world up is picture up
+    >>> np.round(orbit_rotation(0.0, 0.0) @ [0, 0, 1, 0], 12)     # world up is picture up
     array([0., 1., 0., 0.])
     """
     a = as_scalar(azimuth, "azimuth")
@@ -120,7 +120,7 @@ def view_rotation(azimuth, elevation):
 def axonometric(azimuth, elevation):
     r"""An orthographic projection of the world seen from `azimuth` and `elevation`.
 
-    :math:`P_{ORTHO}\, R`: rotate with :func:`view_rotation`, then drop the view z. When the view
+    :math:`P_{ORTHO}\, R`: rotate with :func:`orbit_rotation`, then drop the view z. When the view
     direction lies along a box axis it is a multiview projection; otherwise axonometric
     (isometric, dimetric or trimetric, see :func:`classify_projection`).
 
@@ -139,7 +139,7 @@ def axonometric(azimuth, elevation):
     >>> np.round(axonometric(0, 0) @ [1, 2, 3, 1], 12)     # front view: (x, z)
     array([1., 3., 0., 1.])
     """
-    return viewing.orthographic_xy() @ view_rotation(azimuth, elevation)
+    return viewing.orthographic_xy() @ orbit_rotation(azimuth, elevation)
 
 
 def isometric():
@@ -220,7 +220,7 @@ def oblique_projection(angle, length):
     Faces parallel to the world xz plane keep their true shape; a unit step into the picture
     (world +y) is drawn as a segment of length `length` at `angle` above the image x axis:
     :func:`viewing.oblique` with :math:`DOP = (k\cos\varphi, k\sin\varphi, 1)` applied after the
-    front :func:`view_rotation`. The projectors make the angle :math:`\arctan(1/k)` with the
+    front :func:`orbit_rotation`. The projectors make the angle :math:`\arctan(1/k)` with the
     plane: 45° for the cavalier (:math:`k = 1`), 63.4° for the cabinet (:math:`k = 1/2`).
 
     Parameters
@@ -247,7 +247,7 @@ def oblique_projection(angle, length):
     """
     phi = as_scalar(angle, "angle")
     k = as_positive(length, "length")
-    return viewing.oblique([k * np.cos(phi), k * np.sin(phi), 1.0]) @ view_rotation(0.0, 0.0)
+    return viewing.oblique([k * np.cos(phi), k * np.sin(phi), 1.0]) @ orbit_rotation(0.0, 0.0)
 
 
 def cavalier(angle=np.pi / 4):
@@ -275,7 +275,7 @@ def cabinet(angle=np.pi / 4):
 def perspective_view(azimuth, elevation, distance=5.0, d=1.0):
     r"""A perspective projection from an eye at `distance` from the origin, onto a plane at `d`.
 
-    The eye sits at :math:`\text{distance}\cdot v` (see :func:`view_rotation`) and looks at the
+    The eye sits at :math:`\text{distance}\cdot v` (see :func:`orbit_rotation`) and looks at the
     origin; the plane of projection is perpendicular to the view direction at distance `d` in
     front of the eye: :math:`P_{PER}(-d)\, T(0, 0, -\text{distance})\, R`. Image x, y are the
     first two coordinates after the divide. A front view (:math:`a, e` multiples of 90°) is a
@@ -301,7 +301,7 @@ def perspective_view(azimuth, elevation, distance=5.0, d=1.0):
     dist = as_positive(distance, "distance")
     d = as_positive(d, "d")
     return (viewing.simple_perspective(-d) @ transforms.translate([0.0, 0.0, -dist])
-            @ view_rotation(azimuth, elevation))
+            @ orbit_rotation(azimuth, elevation))
 
 
 def _as_axes(axes):

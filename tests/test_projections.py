@@ -14,7 +14,7 @@ R = np.radians
 
 
 def _ortho_from_rotation(rot):
-    """P_ORTHO after a scipy rotation (world -> view), typed independently of view_rotation."""
+    """P_ORTHO after a scipy rotation (world -> view), typed independently of orbit_rotation."""
     m = np.eye(4)
     m[:3, :3] = rot.as_matrix()
     return np.diag([1.0, 1.0, 0.0, 1.0]) @ m
