@@ -43,6 +43,7 @@ def test_perspective_corners_and_vanishing_points():
     (W.State(kind="perspective", azimuth_deg=0, elevation_deg=0), "one-point perspective"),
     (W.State(kind="perspective", azimuth_deg=35, elevation_deg=0), "two-point perspective"),
     (W.State(kind="parallel", azimuth_deg=45, elevation_deg=35.26), "isometric"),
+    (W.State(kind="parallel", azimuth_deg=45, elevation_deg=35.3), "isometric"),
     (W.State(kind="parallel", azimuth_deg=45, elevation_deg=20), "dimetric"),
     (W.State(kind="parallel", azimuth_deg=30, elevation_deg=20), "trimetric"),
     (W.State(kind="parallel", azimuth_deg=90, elevation_deg=0), "orthographic multiview"),

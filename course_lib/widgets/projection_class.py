@@ -3,7 +3,8 @@ r"""Projection-class explorer: one box under a perspective, parallel or oblique 
 Turn the view (azimuth about the vertical z axis, elevation above the ground) and the class of
 the projection changes with it, named live by :func:`course_lib.projections.classify_projection`:
 a front view in perspective is a one-point perspective, raising or lowering the eye adds the
-third vanishing point, and a parallel view from azimuth 45° and elevation 35.26° is isometric.
+third vanishing point, and a parallel view from azimuth 45° and elevation 35.3° (the slider step nearest 35.264°) is
+isometric.
 In perspective the box's edges are extended (dashed) to the principal vanishing points of their
 directions (:func:`course_lib.projections.principal_vanishing_points`); edges parallel to the
 image plane have none and stay parallel. The oblique projection (cavalier, cabinet or general)
@@ -98,7 +99,8 @@ def scene(state):
     m = _matrix(state)
     h = np.c_[_CORNERS, np.ones(8)] @ m.T
     corners = h[:, :2] / h[:, 3:]
-    # slider angles are rounded to 0.01°: "equal" foreshortening up to 1e-3 (35.26° is isometric)
+    # the elevation slider moves in steps of 0.1°: "equal" foreshortening up to a relative 1e-3
+    # makes its step 35.3° isometric (the exact angle is 35.264°)
     cls = projections.classify_projection(m, tol=1e-3)
     vps = [None if v is None else v[:2] for v in projections.principal_vanishing_points(m)]
     edges, extensions = [], []
@@ -173,7 +175,7 @@ class ProjectionClassExplorer(Explorer):
         self.kind = w.ToggleButtons(options=KINDS, value=self.state.kind,
                                     style={"button_width": _style.button_width(*KINDS)})
         self.azimuth = slider("azimuth °", self.state.azimuth_deg, -180, 180, 1)
-        self.elevation = slider("elevation °", self.state.elevation_deg, -90, 90, 0.01)
+        self.elevation = slider("elevation °", self.state.elevation_deg, -90, 90, 0.1)
         self.distance = slider("eye distance", self.state.distance, 2.5, 12, 0.1)
         self.angle = slider("oblique angle φ °", self.state.oblique_angle_deg, 0, 180, 1)
         self.length = slider("depth length k", self.state.oblique_length, 0.1, 1.0, 0.05)
