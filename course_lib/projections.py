@@ -309,7 +309,8 @@ def _as_axes(axes):
         return np.eye(3)
     a = as_array(axes, "axes")
     if a.shape != (3, 3):
-        raise ValueError(f"axes must be 3 directions as the rows of a 3x3 array, got shape {a.shape}")
+        raise ValueError(f"axes must be 3 directions as the rows of a 3x3 array, got shape "
+                         f"{a.shape}")
     lengths = np.linalg.norm(a, axis=1)
     if np.any(lengths < 1e-12):
         raise ValueError("axes must not contain a zero vector: each row is an edge direction")
@@ -627,7 +628,7 @@ def classify_projection(matrix, axes=None, tol=1e-6):
 
 
 def project_onto_plane(point_on_plane, normal, centre=None, direction=None):
-    r"""The 4x4 matrix of a projection onto the plane :math:`n \cdot x = h` (:math:`h = n \cdot p_0`).
+    r"""The 4x4 matrix of a projection onto the plane :math:`n \cdot x = h`, :math:`h = n \cdot p_0`.
 
     **Perspective** from a centre :math:`c`: the projector :math:`c + t (x - c)` meets the plane
     where :math:`t = (h - n\cdot c) / n\cdot(x - c)`; multiplying by the denominator,

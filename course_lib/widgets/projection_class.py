@@ -3,8 +3,8 @@ r"""Projection-class explorer: one box under a perspective, parallel or oblique 
 Turn the view (azimuth about the vertical z axis, elevation above the ground) and the class of
 the projection changes with it, named live by :func:`course_lib.projections.classify_projection`:
 a front view in perspective is a one-point perspective, raising or lowering the eye adds the
-third vanishing point, and a parallel view from azimuth 45° and elevation 35.3° (the slider step nearest 35.264°) is
-isometric.
+third vanishing point, and a parallel view from azimuth 45° and elevation 35.3° (the slider
+step nearest 35.264°) is isometric.
 In perspective the box's edges are extended (dashed) to the principal vanishing points of their
 directions (:func:`course_lib.projections.principal_vanishing_points`); edges parallel to the
 image plane have none and stay parallel. The oblique projection (cavalier, cabinet or general)
