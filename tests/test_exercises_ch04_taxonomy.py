@@ -18,7 +18,7 @@ from exercise_harness import SEEDS
 from course_lib.exercises._ch04 import taxonomy as module
 
 NAMES = ["CameraVanishingPoint", "ClassifyProjection", "AxonometricForeshortening",
-         "CabinetMatrix", "PrincipalVanishingCount"]
+         "CabinetMatrix", "PrincipalVanishingCount", "PlaneProjectionPoint"]
 ch04 = SimpleNamespace(EXERCISES=[getattr(module, n) for n in NAMES],
                        **{n: getattr(module, n) for n in NAMES})
 
@@ -121,9 +121,22 @@ def vp_count(ex):
                    "eye position instead of gaze": sum(abs(a @ ex.eye) > 1e-9 for a in ex.axes)}
 
 
+def plane_point(ex):
+    # the line c + t (p - c) solved against the plane by numpy (two equations: on the line, on
+    # the plane), not by the closed form
+    c, n, h, p = ex.centre, ex.normal, ex.h, ex.p
+    t = np.linalg.solve([[n @ (p - c)]], [h - n @ c])[0]
+    right = c + t * (p - c)
+    return right, {"orthographic onto the plane": p - (n @ p - h) / (n @ n) * n,
+                   "t inverted": c + (p - c) / t,
+                   "centre at the origin": p * h / (n @ p),
+                   "no divide": c + (h - n @ c) * (p - c)}
+
+
 SPECS = {"CameraVanishingPoint": (camera_vp, "point"), "ClassifyProjection": (classify, "name"),
          "AxonometricForeshortening": (axo, "number"), "CabinetMatrix": (cabinet, "matrix"),
-         "PrincipalVanishingCount": (vp_count, "number")}
+         "PrincipalVanishingCount": (vp_count, "number"),
+         "PlaneProjectionPoint": (plane_point, "point")}
 GARBAGE = {"point": ["I", {"I": 1}, [1, 2], [[1], [2, 3]], [math.nan, 1, 2]],
            "name": ["perspective-ish", 3, [1, 2], {"a": 1}],
            "number": ["I", {"I": 1}, [1, 2], [[1], [2, 3]], [math.nan], math.inf],
@@ -137,7 +150,7 @@ def same(a, b, form=None):
     return harness.same(a, b)
 
 
-globals().update(harness.common_tests(ch04, SPECS, GARBAGE, exercises, at_least=5,
+globals().update(harness.common_tests(ch04, SPECS, GARBAGE, exercises, at_least=6,
                                       distinct=(30, 6)))
 test_mistakes_are_diagnosed = harness.mistakes_test(SPECS, exercises, same, key_seeds=SEEDS)
 

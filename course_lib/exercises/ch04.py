@@ -30,7 +30,8 @@ from ._ch04.parallel import CavalierCabinet, ObliqueProjection
 from ._ch04.css_to_vcs import ViewportMatrix, ViewportPixel
 from ._ch04.perspective_keeps import CrossRatioUnderProjection, VanishingPoint
 from ._ch04.taxonomy import (AxonometricForeshortening, CabinetMatrix, CameraVanishingPoint,
-                             ClassifyProjection, PrincipalVanishingCount)
+                             ClassifyProjection, PlaneProjectionPoint,
+                             PrincipalVanishingCount)
 
 __all__ = [
     "EXERCISES",
@@ -52,6 +53,7 @@ __all__ = [
     "CabinetMatrix",
     "CameraVanishingPoint",
     "ClassifyProjection",
+    "PlaneProjectionPoint",
     "PrincipalVanishingCount",
 ]
 
@@ -76,4 +78,5 @@ EXERCISES = (
     CabinetMatrix,
     CameraVanishingPoint,
     PrincipalVanishingCount,
+    PlaneProjectionPoint,
 )

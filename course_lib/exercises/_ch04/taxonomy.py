@@ -18,6 +18,7 @@ __all__ = [
     "CabinetMatrix",
     "CameraVanishingPoint",
     "ClassifyProjection",
+    "PlaneProjectionPoint",
     "PrincipalVanishingCount",
 ]
 
@@ -666,5 +667,96 @@ class PrincipalVanishingCount(DrawnExercise):
         ], n)
 
 
+class PlaneProjectionPoint(PointAnswer, DrawnExercise):
+    r"""The image of a point under a perspective projection onto an arbitrary plane.
+
+    The projector :math:`c + t(p - c)` meets the plane :math:`n \cdot x = h` at
+    :math:`t = (h - n\cdot c) / n\cdot(p - c)`; the image is :math:`c + t(p - c)`
+    (:func:`course_lib.projections.project_onto_plane`).
+
+    Attributes: ``centre``, ``normal``, ``h``, ``p``.
+
+    Examples
+    --------
+    >>> ex = PlaneProjectionPoint(seed=2)
+    >>> ex.check(ex.expected).status
+    'correct'
+    >>> n = ex.normal
+    >>> ex.check(ex.p - (n @ ex.p - ex.h) / (n @ n) * n).diagnosis
+    'orthographic onto the plane'
+    """
+
+    title = "Perspective projection onto an arbitrary plane"
+    what = "the image point"
+
+    def draw(self, rng):
+        self.normal = np.array(pick(rng, [(0, 0, 1), (0, 1, 0), (1, 0, 0), (1, 1, 0), (0, 1, 1),
+                                          (1, 0, 1), (1, 1, 1)]), dtype=float)
+        self.centre = rng.integers(-2, 3, size=3).astype(float)
+        self.h = float(self.normal @ self.centre + pick(rng, (-4, -3, -2, 2, 3, 4)))
+        self.p = rng.integers(-3, 4, size=3).astype(float)
+        self.expected = None
+        if abs(self.normal @ (self.p - self.centre)) not in (1.0, 2.0, 4.0):
+            return
+        m = projections.project_onto_plane(self.normal * self.h / (self.normal @ self.normal),
+                                           self.normal, centre=self.centre)
+        h = m @ np.append(self.p, 1.0)
+        self.expected = _snap(h[:3] / h[3])
+
+    def acceptable(self):
+        if self.expected is None:
+            return False
+        along = abs(self.normal @ (self.p - self.centre))
+        return bool(np.any(self.centre) and abs(self.normal @ self.p) > 0
+                    and along != abs(self.h - self.normal @ self.centre))
+
+    def mistakes(self):
+        c, n, h, p = self.centre, self.normal, self.h, self.p
+        gap, along = h - n @ c, n @ (p - c)
+        return [
+            Mistake(p - (n @ p - h) / (n @ n) * n, r"You dropped the point perpendicularly onto "
+                    r"the plane (an orthographic projection). The projector of a perspective "
+                    r"projection runs from the centre $c$ through $p$, not along the normal.",
+                    "orthographic onto the plane"),
+            Mistake(c + along / gap * (p - c), r"The parameter is upside down: the projector "
+                    r"$c + t\,(p - c)$ meets the plane where $n\cdot c + t\,n\cdot(p - c) = h$, "
+                    r"so $t = (h - n\cdot c) / n\cdot(p - c)$.", "t inverted"),
+            Mistake(h / (n @ p) * p, r"You projected from the origin, as $P_{PER}$ does. Here "
+                    r"the centre of projection is $c$: the projector is $c + t\,(p - c)$.",
+                    "centre at the origin"),
+            Mistake(c + gap * (p - c), r"You forgot to divide by $n \cdot (p - c)$, the "
+                    r"homogeneous $w$ of the image: $t = (h - n\cdot c) / n\cdot(p - c)$.",
+                    "no divide"),
+        ]
+
+    def statement(self):
+        return (
+            rf"A perspective projection has its centre of projection at $c = {_vec(self.centre)}$ "
+            rf"and projects onto the plane $n \cdot x = h$ with $n = {_vec(self.normal)}$ and "
+            rf"$h = {_num(self.h)}$. Where does the point $p = {_vec(self.p)}$ land on the "
+            r"plane?" "\n\n" + _POINT_3 + "\n\n" + data_note("centre", "normal", "h", "p"))
+
+    def hints(self):
+        c, n, h, p = self.centre, self.normal, self.h, self.p
+        return [r"Follow the projector $c + t\,(p - c)$ from the centre through $p$ until it "
+                r"meets the plane.",
+                rf"Put it into the plane's equation: $n\cdot c + t\,n\cdot(p - c) = h$, with "
+                rf"$n\cdot c = {_num(n @ c)}$ and $n\cdot(p - c) = {_num(n @ (p - c))}$.",
+                rf"So $t = ({_num(h)} - {_par(n @ c)}) / {_par(n @ (p - c))}$; the image is "
+                r"$c + t\,(p - c)$."]
+
+    def worked(self):
+        c, n, h, p = self.centre, self.normal, self.h, self.p
+        t = (h - n @ c) / (n @ (p - c))
+        q = _snap(c + t * (p - c))
+        return Worked([
+            rf"Projector: $c + t\,(p - c)$ with $p - c = {_vec(p - c)}$.",
+            rf"Plane: $n\cdot c + t\,n\cdot(p - c) = h$: ${_num(n @ c)} + t \cdot "
+            rf"{_par(n @ (p - c))} = {_num(h)}$, so $t = {_num(t)}$.",
+            rf"Image: $c + {_par(t)}\,(p - c) = {_vec(q)}$ (check: $n \cdot q = "
+            rf"{_num(n @ q)} = h$).",
+        ], q)
+
+
 EXERCISES = (CameraVanishingPoint, ClassifyProjection, AxonometricForeshortening, CabinetMatrix,
-             PrincipalVanishingCount)
+             PrincipalVanishingCount, PlaneProjectionPoint)
