@@ -1227,3 +1227,33 @@ def test_fact_ch03_normals_frames():
     assert answer_text("ch03-mirror-plane") == "$I - 2 n n^T$"
     u = np.array([2.0, 3.0, 6.0]) / 7
     assert np.allclose(tt.reflection_matrix([0, 0, 0], u)[:3, :3], np.eye(3) - 2 * np.outer(u, u))
+
+
+def test_fact_ch04_taxonomy():
+    """Two-point perspective for a level camera, isometric foreshortening sqrt(2/3), the cabinet's
+    half depth at arctan 2, vanishing points as images of (d, 0), orthographic = perpendicular
+    projectors: checked with scipy rotations and far points, not with course_lib."""
+    assert answer_text("ch04-two-point-perspective") == "Two"
+    assert not truth("ch04-isometric-true-length")
+    assert answer_text("ch04-cabinet").startswith("At half length")
+    assert truth("ch04-vanishing-point-homogeneous")
+    assert answer_text("ch04-orthographic-vs-oblique").startswith("Whether the projectors")
+    # a level camera turned 30 degrees about the vertical: image plane normal = view direction
+    view = Rotation.from_euler("z", 30, degrees=True).apply([0.0, 1.0, 0.0])
+    assert sum(abs(axis @ view) > 1e-9 for axis in np.eye(3)) == 2
+    # isometric: the unit axes seen along (1, 1, 1)/sqrt 3 keep sqrt(2/3) of their length
+    v = np.ones(3) / np.sqrt(3)
+    lengths = [np.linalg.norm(a - (a @ v) * v) for a in np.eye(3)]
+    assert np.allclose(lengths, np.sqrt(2 / 3)) and not np.allclose(lengths, 1)
+    # cabinet: projectors at arctan 2 to the plane z = 0 draw a unit of depth with length 1/2
+    alpha = np.arctan(2.0)
+    dop = np.array([np.cos(alpha), 0.0, -np.sin(alpha)])
+    p = np.array([0.0, 0.0, 1.0])
+    image = p - p[2] / dop[2] * dop
+    assert math.isclose(np.linalg.norm(image[:2]), 0.5)
+    # the vanishing point: far points of a line under P_PER (d = 2) tend to P (d, 0) / w
+    d, P = np.array([1.0, 2.0, 4.0]), np.diag([2.0, 2.0, 2.0, 0.0])
+    P[3, 2] = 1.0
+    far = P @ np.append(np.array([1.0, -1.0, 3.0]) + 1e9 * d, 1.0)
+    vp = P @ np.append(d, 0.0)
+    assert np.allclose(far[:3] / far[3], vp[:3] / vp[3], atol=1e-6)

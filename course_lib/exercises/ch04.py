@@ -29,6 +29,9 @@ from ._ch04.ecs_to_css import CssDepth, OrthographicMatrix, PerspectiveDivide, P
 from ._ch04.parallel import CavalierCabinet, ObliqueProjection
 from ._ch04.css_to_vcs import ViewportMatrix, ViewportPixel
 from ._ch04.perspective_keeps import CrossRatioUnderProjection, VanishingPoint
+from ._ch04.taxonomy import (AxonometricForeshortening, CabinetMatrix, CameraVanishingPoint,
+                             ClassifyProjection, PlaneProjectionPoint,
+                             PrincipalVanishingCount)
 
 __all__ = [
     "EXERCISES",
@@ -46,6 +49,12 @@ __all__ = [
     "VanishingPoint",
     "ViewportMatrix",
     "ViewportPixel",
+    "AxonometricForeshortening",
+    "CabinetMatrix",
+    "CameraVanishingPoint",
+    "ClassifyProjection",
+    "PlaneProjectionPoint",
+    "PrincipalVanishingCount",
 ]
 
 #: The exercises of chapter 4, in the order of the solutions notebook.
@@ -64,4 +73,10 @@ EXERCISES = (
     ViewportPixel,
     CrossRatioUnderProjection,
     VanishingPoint,
+    ClassifyProjection,
+    AxonometricForeshortening,
+    CabinetMatrix,
+    CameraVanishingPoint,
+    PrincipalVanishingCount,
+    PlaneProjectionPoint,
 )

@@ -111,4 +111,62 @@ QUESTIONS = [
          "the factor is half the window size, and the centre $0$ must move to the window "
          "centre."),
         correct=1),
+    _mc(4, "ch04-two-point-perspective",
+        "A box stands on the ground and is photographed by a camera whose direction of view is "
+        "horizontal but not along an edge of the box. How many principal vanishing points does "
+        "the picture have?",
+        ("One", "One vanishing point needs the image plane parallel to a face of the box, i.e. "
+         "the camera looking along an edge direction."),
+        ("Two", "The vertical edges are parallel to the (vertical) image plane and stay "
+         "parallel; the two horizontal edge directions both cut the plane and each meet at "
+         "a vanishing point on the horizon."),
+        ("Three", "A third vanishing point appears only when the camera tilts up or down, so "
+         "that the vertical edges also cut the image plane."),
+        ("None: parallel edges stay parallel", "That holds for parallel projections; in a "
+         "perspective one, edges not parallel to the image plane converge."),
+        correct=1),
+    _tf(4, "ch04-isometric-true-length",
+        "In an isometric projection every edge of an axis-aligned cube is drawn at its true "
+        "length.", False,
+        "Right: the view direction makes the same angle with the three axes, so all three are "
+        "shortened by the same factor $\\sqrt{2/3} \\approx 0.816$ (an isometric *drawing* "
+        "scales them back up to 1 by convention).",
+        "Every axis is inclined to the image plane, so each is foreshortened, by the same factor "
+        "$\\sqrt{2/3} \\approx 0.816$; only a hand-made isometric *drawing* uses full lengths."),
+    _mc(4, "ch04-cabinet",
+        "In a cabinet projection, how is a unit length along the depth axis (perpendicular to "
+        "the plane of projection) drawn?",
+        ("At full length, at an angle such as 45°", "That is the cavalier projection: the "
+         "projectors make 45° with the plane."),
+        ("At half length, at an angle such as 30° or 45°", "The projectors make the angle "
+         "$\\arctan 2 \\approx 63.4°$ with the plane, so depth is drawn halved, which looks "
+         "more natural than the cavalier's full length."),
+        ("Not at all: depth collapses to a point", "That is an orthographic front view "
+         "(multiview): the projectors run along the depth axis."),
+        ("Shorter the farther it is from the plane", "Shrinking with distance is perspective; "
+         "every oblique projection is parallel and draws all depth edges alike."),
+        correct=1),
+    _tf(4, "ch04-vanishing-point-homogeneous",
+        "The vanishing point of a direction $\\vec d$ under a projection matrix $M$ is "
+        "obtained by applying $M$ to the homogeneous point $(\\vec d, 0)$ and dividing by the "
+        "resulting $w$.", True,
+        "Right: $(\\vec d, 0)$ is the point at infinity shared by all lines of direction "
+        "$\\vec d$, the limit of $p + t\\vec d$; when the resulting $w$ is 0 the direction is "
+        "parallel to the image plane and there is no vanishing point.",
+        "It is true: the lines $p + t\\vec d$ all tend to the point at infinity "
+        "$(\\vec d, 0)$ and their images to its image (no vanishing point when its $w$ is 0)."),
+    _mc(4, "ch04-orthographic-vs-oblique",
+        "Two parallel projections have the same plane of projection. What tells an "
+        "orthographic from an oblique one?",
+        ("Whether parallel lines stay parallel", "Both keep parallel lines parallel: every "
+         "parallel projection is affine."),
+        ("Whether the projectors are perpendicular to the plane of projection",
+         "Orthographic: perpendicular; oblique: at another angle, which is why a face "
+         "parallel to the plane keeps its shape in both but depth is drawn slanted only in "
+         "the oblique one."),
+        ("Whether there is a centre of projection", "Neither has one at a finite distance: "
+         "that distinguishes perspective from parallel projections."),
+        ("Whether the box is rotated", "Rotating the object changes an orthographic view from "
+         "multiview to axonometric, not into an oblique projection."),
+        correct=1),
 ]
