@@ -230,3 +230,20 @@ def test_screen_rect_of_a_box():
     assert rect == (12, 1, 15, 4)
     with pytest.raises(ValueError, match="points"):
         V.screen_rect([[1, 2]], 16, 16)
+
+
+def test_a_chosen_level_reads_every_covering_texel():
+    depth = _scene(11)
+    p = V.z_pyramid(depth)
+    rect, z = (5, 9, 30, 20), 0.7
+    full = V.full_test(depth, rect, z)[0]
+    previous = True
+    for k in range(len(p.levels)):
+        rej, level, texels = V.hzb_test(p, rect, z, level=k)
+        tex = p.levels[k][9 >> k:(20 >> k) + 1, 5 >> k:(30 >> k) + 1]
+        assert level == k and texels == tex.size and rej == (z > tex.max())
+        assert not rej or previous            # coarser levels reject no more than finer ones
+        previous = rej
+    assert V.hzb_test(p, rect, z, level=0)[0] == full
+    with pytest.raises(ValueError, match="level"):
+        V.hzb_test(p, rect, z, level=len(p.levels))

@@ -297,9 +297,13 @@ def hzb_level(rect, max_span=2):
     return int(level[0]) if single else level
 
 
-def _covering(levels, r, max_span):
-    """Per box: its level (capped at the top), the texel index ranges, and the texel max."""
-    level = np.minimum(hzb_level(r, max_span), len(levels) - 1)
+def _covering(levels, r, max_span, fixed=None):
+    """Per box: its level (capped at the top, or `fixed`), the texels read, and their max."""
+    if fixed is None:
+        level = np.minimum(hzb_level(r, max_span), len(levels) - 1)
+    else:
+        level = np.full(len(r), fixed, dtype=np.int64)
+        max_span = 0                  # any number of texels: gather them one box at a time
     out = np.empty(len(r))
     texels = np.empty(len(r), dtype=np.int64)
     for k in np.unique(level):
@@ -316,7 +320,17 @@ def _covering(levels, r, max_span):
     return level, out, texels
 
 
-def hzb_test(pyramid, rect, z_near, max_span=2):
+def _level_arg(level, pyramid):
+    if level is None:
+        return None
+    level = as_whole(level, "level", 0)
+    if level >= len(pyramid.levels):
+        raise ValueError(f"level must be at most {len(pyramid.levels) - 1} (the 1 x 1 top), "
+                         f"got {level}")
+    return level
+
+
+def hzb_test(pyramid, rect, z_near, max_span=2, level=None):
     r"""Whether the hierarchical z-buffer rejects a box: its nearest depth is behind every texel.
 
     The level is :func:`hzb_level` (at most ``max_span`` x ``max_span`` texels cover the
@@ -335,6 +349,9 @@ def hzb_test(pyramid, rect, z_near, max_span=2):
     z_near : float
         The box's nearest depth.
     max_span : int
+    level : int, optional
+        Read this level instead (all its texels that cover the rectangle, however many):
+        finer levels read more texels, coarser ones reject less.
 
     Returns
     -------
@@ -353,12 +370,14 @@ def hzb_test(pyramid, rect, z_near, max_span=2):
 
     >>> hzb_test(p, (0, 0, 2, 1), 0.55), full_test(d, (0, 0, 2, 1), 0.55)
     ((False, 1, 2), (True, 6))
+    >>> hzb_test(p, (0, 0, 2, 1), 0.55, level=0)
+    (True, 0, 6)
     """
-    r = hzb_cull(pyramid, [rect], [as_scalar(z_near, "z_near")], max_span)
+    r = hzb_cull(pyramid, [rect], [as_scalar(z_near, "z_near")], max_span, level)
     return bool(r.rejected[0]), int(r.level[0]), int(r.texels[0])
 
 
-def hzb_cull(pyramid, rects, z_nears, max_span=2):
+def hzb_cull(pyramid, rects, z_nears, max_span=2, level=None):
     """:func:`hzb_test` for many boxes at once, vectorized per level.
 
     Parameters
@@ -368,6 +387,8 @@ def hzb_cull(pyramid, rects, z_nears, max_span=2):
     rects : array_like, shape (n, 4)
     z_nears : array_like, shape (n,) or a number
     max_span : int
+    level : int, optional
+        One level for every box (see :func:`hzb_test`).
 
     Returns
     -------
@@ -385,7 +406,7 @@ def hzb_cull(pyramid, rects, z_nears, max_span=2):
     max_span = as_whole(max_span, "max_span", 1)
     r = _rects(rects, pyramid.shape)
     z = _nears(z_nears, len(r))
-    level, far, texels = _covering(pyramid.levels, r, max_span)
+    level, far, texels = _covering(pyramid.levels, r, max_span, _level_arg(level, pyramid))
     return HZBCull(z > far, level, texels)
 
 
@@ -635,7 +656,7 @@ def depth_estimation_buffer(occluder_depth, tile):
     return np.where(np.isneginf(finite), np.inf, finite)
 
 
-def hom_test(pyramid, rect, z_near, deb, threshold=1.0, max_span=2):
+def hom_test(pyramid, rect, z_near, deb, threshold=1.0, max_span=2, level=None):
     """The hierarchical occlusion map test of one box: opaque enough and behind the occluders.
 
     Parameters
@@ -653,6 +674,8 @@ def hom_test(pyramid, rect, z_near, deb, threshold=1.0, max_span=2):
         Opacity that counts as opaque. 1: culled only behind fully covered texels (conservative
         up to the depth estimate); below 1: approximate, small gaps are ignored.
     max_span : int
+    level : int, optional
+        Read this level instead of the one where at most `max_span` texels cover the box.
 
     Returns
     -------
@@ -677,7 +700,9 @@ def hom_test(pyramid, rect, z_near, deb, threshold=1.0, max_span=2):
         raise ValueError("deb must be a 2D array of depths")
     r = _rects([rect], pyramid.shape, "rect")[0]
     z = as_scalar(z_near, "z_near")
-    level = min(hzb_level(r, as_whole(max_span, "max_span", 1)), len(pyramid.levels) - 1)
+    level = _level_arg(level, pyramid)
+    if level is None:
+        level = min(hzb_level(r, as_whole(max_span, "max_span", 1)), len(pyramid.levels) - 1)
     i0, j0, i1, j1 = r >> level
     ops = pyramid.levels[level][j0:j1 + 1, i0:i1 + 1]
     h, w = pyramid.shape
