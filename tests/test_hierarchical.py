@@ -247,3 +247,24 @@ def test_a_chosen_level_reads_every_covering_texel():
     assert V.hzb_test(p, rect, z, level=0)[0] == full
     with pytest.raises(ValueError, match="level"):
         V.hzb_test(p, rect, z, level=len(p.levels))
+
+
+def test_more_errors_name_the_argument():
+    p = V.z_pyramid(np.full((8, 8), 0.5))
+    with pytest.raises(TypeError, match="z_nears"):
+        V.hzb_cull(p, [(0, 0, 3, 3)], ["far"])
+    with pytest.raises(ValueError, match="z_nears"):
+        V.hzb_cull(p, [(0, 0, 3, 3)], [np.nan])
+    with pytest.raises(ValueError, match="proxy"):
+        V.occlusion_query(np.ones((4, 4)), (5, 5, 6, 6), 0.5)
+    with pytest.raises(ValueError, match="tile"):
+        V.depth_estimation_buffer(np.ones((4, 4)), 0)
+    hom = V.occlusion_map_pyramid(np.ones((4, 4)))
+    with pytest.raises(ValueError, match="threshold"):
+        V.hom_test(hom, (0, 0, 1, 1), 0.5, np.zeros((1, 1)), threshold=1.5)
+    with pytest.raises(TypeError, match="occlusion-map"):
+        V.hom_test(p, (0, 0, 1, 1), 0.5, np.zeros((1, 1)))
+    with pytest.raises(ValueError, match="deb"):
+        V.hom_test(hom, (0, 0, 1, 1), 0.5, np.zeros(3))
+    with pytest.raises(ValueError, match="max_span"):
+        V.hzb_test(p, (0, 0, 1, 1), 0.5, max_span=0)

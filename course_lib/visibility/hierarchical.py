@@ -198,9 +198,12 @@ def _rects(rects, shape, name="rects"):
 
 
 def _nears(z, n, name="z_nears"):
-    z = np.asarray(z, dtype=float) if not isinstance(z, (str, bytes)) else None
-    if z is None or z.dtype.kind != "f":
-        raise TypeError(f"{name} must be numbers")
+    if isinstance(z, (str, bytes)) or z is None:
+        raise TypeError(f"{name} must be numbers, got {type(z).__name__}")
+    try:
+        z = np.asarray(z, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be numbers") from None
     z = np.broadcast_to(z, (n,)) if z.ndim == 0 else z
     if z.shape != (n,) or not np.isfinite(z).all():
         raise ValueError(f"{name} must be {n} finite depths, got shape {z.shape}")
