@@ -268,3 +268,21 @@ def test_more_errors_name_the_argument():
         V.hom_test(hom, (0, 0, 1, 1), 0.5, np.zeros(3))
     with pytest.raises(ValueError, match="max_span"):
         V.hzb_test(p, (0, 0, 1, 1), 0.5, max_span=0)
+
+
+def test_hom_descent_with_threshold_one_is_exact_coverage():
+    rng = np.random.default_rng(12)
+    cov = np.ones((32, 32))
+    cov[rng.integers(0, 32, 12), rng.integers(0, 32, 12)] = 0     # a few holes
+    p = V.occlusion_map_pyramid(cov)
+    deb = np.zeros((4, 4))                                        # every box is behind
+    checked = 0
+    for rect in _random_rects(rng, 400, 32, 32, 16):
+        i0, j0, i1, j1 = rect
+        covered = bool((cov[j0:j1 + 1, i0:i1 + 1] == 1).all())
+        t = V.hom_test(p, rect, 0.5, deb, threshold=1.0)
+        assert t.opaque == covered and t.culled == covered
+        flat = V.hom_test(p, rect, 0.5, deb, threshold=1.0, descend=False)
+        assert not flat.opaque or covered and t.reads >= flat.reads
+        checked += covered
+    assert checked > 20

@@ -110,6 +110,8 @@ class HOMTest(NamedTuple):
         The occlusion-map level read.
     opacities : ndarray
         The covering texels' opacities (rows bottom to top).
+    reads : int
+        Texels read by the overlap test (with the descent into partly covered texels).
 
     Examples
     --------
@@ -123,6 +125,7 @@ class HOMTest(NamedTuple):
     behind: bool
     level: int
     opacities: np.ndarray
+    reads: int
 
 
 class QueryLoop(NamedTuple):
@@ -659,7 +662,7 @@ def depth_estimation_buffer(occluder_depth, tile):
     return np.where(np.isneginf(finite), np.inf, finite)
 
 
-def hom_test(pyramid, rect, z_near, deb, threshold=1.0, max_span=2, level=None):
+def hom_test(pyramid, rect, z_near, deb, threshold=1.0, max_span=2, level=None, descend=True):
     """The hierarchical occlusion map test of one box: opaque enough and behind the occluders.
 
     Parameters
@@ -679,6 +682,10 @@ def hom_test(pyramid, rect, z_near, deb, threshold=1.0, max_span=2, level=None):
     max_span : int
     level : int, optional
         Read this level instead of the one where at most `max_span` texels cover the box.
+    descend : bool
+        As Zhang et al.: a covering texel below the threshold is not the end; its children that
+        overlap the rectangle are tested, down to level 0 (the box may overlap only the covered
+        part of a partly covered texel). False: decide on the covering texels alone.
 
     Returns
     -------
@@ -691,6 +698,16 @@ def hom_test(pyramid, rect, z_near, deb, threshold=1.0, max_span=2, level=None):
     >>> t.culled, t.level, t.opacities.tolist()
     (True, 1, [[0.75, 1.0], [1.0, 1.0]])
     >>> hom_test(occlusion_map_pyramid(c), (0, 0, 3, 3), 0.9, np.full((1, 1), 0.5)).culled
+    False
+
+    The box of the columns 1-3 overlaps the partly covered texel (0, 0) only where it is
+    covered: the descent to level 0 finds that out (4 texels, then 2 children of the first):
+
+    >>> t = hom_test(occlusion_map_pyramid(c), (1, 0, 3, 3), 0.9, np.full((1, 1), 0.5))
+    >>> t.culled, t.reads
+    (True, 6)
+    >>> hom_test(occlusion_map_pyramid(c), (1, 0, 3, 3), 0.9, np.full((1, 1), 0.5),
+    ...          descend=False).culled
     False
     """
     if not isinstance(pyramid, Pyramid) or pyramid.reduce != "mean":
@@ -711,6 +728,26 @@ def hom_test(pyramid, rect, z_near, deb, threshold=1.0, max_span=2, level=None):
     h, w = pyramid.shape
     th, tw = -(-h // d.shape[0]), -(-w // d.shape[1])
     tiles = d[r[1] // th:r[3] // th + 1, r[0] // tw:r[2] // tw + 1]
-    opaque = bool((ops >= threshold - 1e-12).all())
+    reads = [0]
+    if descend:
+        opaque = all(_opaque_texel(pyramid.levels, level, a, b, r, threshold, reads)
+                     for a in range(j0, j1 + 1) for b in range(i0, i1 + 1))
+    else:
+        reads[0] = ops.size
+        opaque = bool((ops >= threshold - 1e-12).all())
     behind = bool(z > tiles.max())
-    return HOMTest(opaque and behind, opaque, behind, int(level), ops.copy())
+    return HOMTest(opaque and behind, opaque, behind, int(level), ops.copy(), reads[0])
+
+
+def _opaque_texel(levels, k, row, col, rect, threshold, reads):
+    """Zhang's overlap test of one texel: opaque enough, or all its children that overlap the
+    rectangle are (down to level 0). Counts the texels read in ``reads[0]``."""
+    reads[0] += 1
+    if levels[k][row, col] >= threshold - 1e-12:
+        return True
+    if k == 0:
+        return False
+    i0, j0, i1, j1 = rect >> (k - 1)
+    return all(_opaque_texel(levels, k - 1, a, b, rect, threshold, reads)
+               for a in range(max(2 * row, j0), min(2 * row + 1, j1) + 1)
+               for b in range(max(2 * col, i0), min(2 * col + 1, i1) + 1))

@@ -129,7 +129,7 @@ def scene(state):
         rgb = np.repeat(big[..., None], 3, axis=2) * 0.85 + 0.1
         t = visibility.hom_test(hom, rect, z, deb, state.threshold, level=level)
         rejected = t.culled
-        texels = t.opacities.size
+        texels = t.reads                       # with the descent into partly covered texels
         a = visibility.hom_test(hom, rect, z, deb, state.threshold)
         auto_rej, auto = a.culled, a.level
         full_rej = None
@@ -159,7 +159,8 @@ def scene(state):
                 f"{state.threshold:.2f}, counts in HOM mode only.)")
     else:
         how = (f"covering opacities min {t.opacities.min():.2f} vs threshold "
-               f"{state.threshold:.2f} ({'opaque' if t.opaque else 'not opaque'}); depth "
+               f"{state.threshold:.2f} ({'opaque' if t.opaque else 'not opaque'}, after "
+               f"descending into partly covered texels); depth "
                f"estimate {'passed' if t.behind else 'failed'}")
         full = ("HOM is approximate: with a threshold below 1 it may cull a box seen through "
                 "small gaps.")
