@@ -286,3 +286,34 @@ def test_hom_descent_with_threshold_one_is_exact_coverage():
         assert not flat.opaque or covered and t.reads >= flat.reads
         checked += covered
     assert checked > 20
+
+
+def _box_mesh(lo, hi):
+    v = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                  for z in (lo[2], hi[2])], float)
+    f = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+         [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]]
+    return v, np.array(f)
+
+
+def test_box_screen_rect_bounds_the_rendered_box():
+    from course_lib import viewing
+    rng = np.random.default_rng(13)
+    view = viewing.look_at([1.0, 2.0, 6.0], [-0.1, -0.3, -1.0], [0, 1, 0])
+    proj = viewing.perspective(np.radians(50), 1.0, 0.5, 20.0)
+    for _ in range(20):
+        c = rng.uniform(-2, 2, 3)
+        lo, hi = c - rng.uniform(0.2, 1, 3), c + rng.uniform(0.2, 1, 3)
+        v, f = _box_mesh(lo, hi)
+        zb = V.render_depth(v, f, view, proj, 48, 48)
+        shown = np.isfinite(zb.depth)
+        if not shown.any():
+            continue
+        (i0, j0, i1, j1), zn = V.box_screen_rect(lo, hi, view, proj, 48, 48)
+        rows, cols = np.nonzero(shown)
+        assert i0 <= cols.min() and cols.max() <= i1 and j0 <= rows.min() and rows.max() <= j1
+        assert zn <= zb.depth[shown].min() + 1e-12
+    # a box around the eye: the whole screen, never culled
+    assert V.box_screen_rect([0, 1, 5], [2, 3, 7], view, proj, 48, 48) == ((0, 0, 47, 47), 0.0)
+    with pytest.raises(ValueError, match="negative size"):
+        V.box_screen_rect([1, 1, 1], [0, 2, 2], view, proj, 48, 48)

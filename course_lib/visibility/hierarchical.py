@@ -25,7 +25,8 @@ pixel ``(row j, column i)``, row 0 at the bottom; depth in [0, 1] grows away fro
 ``i0..i1`` and rows ``j0..j1``, **inclusive**. Rectangles reaching past the screen are clamped to
 it; one entirely off the screen, or with ``i1 < i0`` or ``j1 < j0``, is refused (ValueError).
 Boxes are given in screen space (a rectangle and the nearest depth); :func:`screen_rect` gets
-both from the corners of a 3D box already in viewport coordinates.
+both from the corners of a 3D box already in viewport coordinates, :func:`box_screen_rect` from a
+world box and the camera's view and projection matrices.
 
 **Padding.** A level with an odd size is padded by repeating its last row or column before the
 2 x 2 reduction. For the max pyramid that is conservative: a padded texel is a copy of a real one,
@@ -38,11 +39,13 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._validate import as_scalar, as_whole
+from .. import transforms, viewing
+from .._validate import as_scalar, as_vector, as_whole
+from ._common import _camera
 from .z_buffer import zbuffer
 
 __all__ = ["HZBCull", "HOMTest", "Pyramid", "QueryLoop", "depth_estimation_buffer",
-           "draw_if_visible", "full_cull", "full_test", "hom_test", "hzb_cull", "hzb_level",
+           "box_screen_rect", "draw_if_visible", "full_cull", "full_test", "hom_test", "hzb_cull", "hzb_level",
            "hzb_test", "occlusion_map_pyramid", "occlusion_query", "screen_rect", "z_pyramid"]
 
 
@@ -500,6 +503,51 @@ def screen_rect(points, width, height):
     i1, j1 = max(i1, i0), max(j1, j0)
     rect = _rects([(i0, j0, i1, j1)], (height, width), "points")[0]
     return tuple(int(v) for v in rect), float(p[:, 2].min())
+
+
+def box_screen_rect(lo, hi, view, projection, width, height):
+    """The screen rectangle and nearest depth of an axis-aligned world box, through the camera.
+
+    The 8 corners go through ``projection @ view``, the perspective divide and the viewport
+    (depth to [0, 1]), as :func:`course_lib.visibility.render_depth` maps triangles; then
+    :func:`screen_rect`. A box reaching behind the eye (some corner with clip :math:`w \\le 0`)
+    cannot be bounded this way: it gets the whole screen and depth 0, i.e. it is never culled
+    (conservative).
+
+    Parameters
+    ----------
+    lo, hi : array_like, shape (3,)
+        Opposite corners of the box (world coordinates).
+    view, projection : array_like, shape (4, 4)
+    width, height : int
+
+    Returns
+    -------
+    (tuple of 4 ints, float)
+
+    Examples
+    --------
+    >>> view = viewing.look_at([0, 0, 5], [0, 0, -1], [0, 1, 0])     # eye, gaze, up
+    >>> proj = viewing.perspective(np.radians(60), 1.0, 1.0, 10.0)
+    >>> rect, z = box_screen_rect([-0.5, -0.5, -0.5], [0.5, 0.5, 0.5], view, proj, 64, 64)
+    >>> rect, round(z, 3)
+    ((25, 25, 38, 38), 0.864)
+    """
+    lo, hi = as_vector(lo, "lo", 3), as_vector(hi, "hi", 3)
+    if (hi < lo).any():
+        raise ValueError("hi must be >= lo in every coordinate (a box of negative size)")
+    view, projection = _camera(view, projection)
+    width, height = as_whole(width, "width", 1), as_whole(height, "height", 1)
+    corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                        for z in (lo[2], hi[2])])
+    clip = transforms.to_homogeneous(corners) @ (projection @ view).T
+    if (clip[:, 3] <= 1e-12).any():
+        return (0, 0, width - 1, height - 1), 0.0
+    screen = transforms.apply(viewing.viewport(0, 0, width, height),
+                              transforms.from_homogeneous(clip))
+    screen[:, 0] = np.clip(screen[:, 0], -1.0, width + 1.0)   # partly off screen: clamp
+    screen[:, 1] = np.clip(screen[:, 1], -1.0, height + 1.0)
+    return screen_rect(screen, width, height)
 
 
 # ---------------------------------------------------------------------------------------------
