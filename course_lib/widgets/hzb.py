@@ -2,8 +2,8 @@
 
 The picture is one level of the pyramid (nearest-neighbour enlarged to the screen): the depth
 pyramid (max of 2 x 2) in HZB mode, the occluders' opacity pyramid (mean of 2 x 2) in HOM mode.
-The box's screen rectangle is tinted and the texels of the shown level that cover it are
-outlined: red when the box is rejected there, yellow when it must be drawn. The text compares
+The box's screen rectangle is tinted pink and the texels of the shown level that cover it are
+outlined: red when the box is rejected there, black when it must be drawn. The text compares
 the texels read with the pixels a full-resolution test reads, and names the level the
 hierarchical test would pick by itself (at most 2 x 2 texels).
 """
@@ -136,10 +136,10 @@ def scene(state):
     pixels = (i1 - i0 + 1) * (j1 - j0 + 1)
     img = np.repeat(np.repeat(rgb, SCALE, axis=0), SCALE, axis=1)
     s = SCALE
-    tint = np.array([1.0, 0.55, 0.1])
+    tint = np.array([0.95, 0.35, 0.75])
     img[j0 * s:(j1 + 1) * s, i0 * s:(i1 + 1) * s] = 0.55 * img[j0 * s:(j1 + 1) * s,
                                                               i0 * s:(i1 + 1) * s] + 0.45 * tint
-    edge = np.array([0.9, 0.1, 0.1]) if rejected else np.array([1.0, 0.95, 0.2])
+    edge = np.array([0.9, 0.05, 0.05]) if rejected else np.array([0.05, 0.05, 0.05])
     a0, b0, a1, b1 = (i0 >> level) * f * s, (j0 >> level) * f * s, \
         min(((i1 >> level) + 1) * f, SIZE) * s, min(((j1 >> level) + 1) * f, SIZE) * s
     step = f * s
@@ -197,7 +197,8 @@ class HZBExplorer(Explorer):
         ax = self.fig.add_axes([0.1, 0.08, 0.85, 0.85])
         self.image = ax.imshow(s["image"], origin="lower", extent=(0, SIZE, 0, SIZE),
                                interpolation="nearest")
-        ax.set_title("pyramid level (enlarged) and the box", fontsize=_style.LABEL)
+        ax.set_title("box (pink); covering texels: red rejects, black keeps",
+                     fontsize=_style.LABEL)
         _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.image])
         self.mode = labelled(w.Dropdown, "mode", options=["HZB", "HOM"], value=self.state.mode)
