@@ -1257,3 +1257,33 @@ def test_fact_ch04_taxonomy():
     far = P @ np.append(np.array([1.0, -1.0, 3.0]) + 1e9 * d, 1.0)
     vp = P @ np.append(d, 0.0)
     assert np.allclose(far[:3] / far[3], vp[:3] / vp[3], atol=1e-6)
+
+
+def test_fact_ch05_hierarchical():
+    """The z-pyramid is a block max (skimage), the HZB never rejects a box the per-pixel test
+    shows, a threshold below 1 culls a box seen through a gap, and front-to-back querying culls
+    more than back to front."""
+    from skimage.measure import block_reduce
+    from course_lib import visibility as V
+    assert not truth("ch05-hzb-conservative")
+    assert "farthest" in answer_text("ch05-zpyramid-reduction")
+    assert "stalls" in answer_text("ch05-occlusion-query-cost")
+    assert "show through" in answer_text("ch05-hom-approximate")
+    depth = RNG.uniform(0, 1, (32, 32))
+    p = V.z_pyramid(depth)
+    assert np.array_equal(p.levels[2], block_reduce(depth, (4, 4), np.max))
+    rects = np.sort(RNG.integers(0, 32, (500, 2, 2)), axis=1).reshape(500, 4)  # i0 j0 i1 j1
+    z = RNG.uniform(0.9, 1.0, 500)
+    hzb = V.hzb_cull(p, rects, z).rejected
+    shown = np.array([(depth[j0:j1 + 1, i0:i1 + 1] > zn).any()
+                      for (i0, j0, i1, j1), zn in zip(rects, z)])
+    assert not (hzb & shown).any() and hzb.any()
+    cov = np.ones((16, 16))
+    cov[3, 3] = 0
+    deb = V.depth_estimation_buffer(np.where(cov > 0, 0.2, np.inf), 4)
+    t = V.hom_test(V.occlusion_map_pyramid(cov), (0, 0, 15, 15), 0.5, deb, threshold=0.9)
+    assert t.culled and V.occlusion_query(np.where(cov > 0, 0.2, np.inf), (0, 0, 15, 15), 0.5)
+    r = [(0, 0, 15, 15), (2, 2, 9, 9), (5, 5, 12, 12)]
+    zs = [0.1, 0.5, 0.7]
+    assert (V.draw_if_visible(r, zs, 16, 16).drawn.sum()
+            < V.draw_if_visible(r, zs, 16, 16, order="back_to_front").drawn.sum())

@@ -74,3 +74,10 @@ EXERCISES = (
     PainterFailure,
     RayCastingCount,
 )
+
+# Hierarchical occlusion culling: the z-pyramid, the HZB test, occlusion queries, occlusion maps
+from ._ch05.hierarchical import (HOMOpacity, HZBRejection, OcclusionQueryCount,  # noqa: E402
+                                 ZPyramidNextLevel)
+
+__all__ += ["HOMOpacity", "HZBRejection", "OcclusionQueryCount", "ZPyramidNextLevel"]
+EXERCISES += (ZPyramidNextLevel, HZBRejection, OcclusionQueryCount, HOMOpacity)

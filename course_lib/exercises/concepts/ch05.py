@@ -111,4 +111,55 @@ QUESTIONS = [
         "and polygons must be split (as a BSP tree does).",
         "It can fail: cyclic overlap has no valid back-to-front order, so polygons must be "
         "split first."),
+    # hierarchical occlusion culling: the z-pyramid, occlusion queries, occlusion maps
+    _tf(5, "ch05-hzb-conservative",
+        "The hierarchical z-buffer may reject a bounding box that the full per-pixel depth test "
+        "would show as partly visible.", False,
+        "It cannot: each coarse texel holds the farthest depth of the pixels below it, so a box "
+        "behind every covering texel is behind every pixel of its rectangle. The reverse "
+        "mistake does happen: it may keep a box that is in fact hidden.",
+        "Right: the test is conservative. A texel's value is the maximum of its pixels, so "
+        "passing the coarse test implies passing the per-pixel one; only hidden boxes are ever "
+        "rejected (some hidden ones are kept)."),
+    _mc(5, "ch05-zpyramid-reduction",
+        "A texel of the next level of a z-pyramid (hierarchical z-buffer) stores, of the 2 x 2 "
+        "texels below it:",
+        ("the average depth", "An average promises nothing about each pixel: a box behind the "
+         "average may still be in front of a pixel that is farther."),
+        ("the nearest (smallest) depth", "A box behind the nearest depth may still be in front "
+         "of the other three texels: rejecting it would be wrong."),
+        ("the farthest (largest) depth", "Then 'behind the texel' means behind every pixel it "
+         "covers, which makes the rejection test safe."),
+        ("the depth of the last texel drawn", "Drawing order does not matter to the pyramid; it "
+         "summarizes the depth buffer as it is."),
+        correct=2),
+    _mc(5, "ch05-occlusion-query-cost",
+        "What makes hardware occlusion queries (draw the bounding box, count the samples that "
+        "pass the depth test) expensive if used naively?",
+        ("Counting the samples needs a second depth buffer", "The query uses the ordinary depth "
+         "buffer with depth and colour writes off; it adds a counter, not a buffer."),
+        ("The result comes back only after the GPU has drawn the proxy: waiting for it stalls "
+         "the CPU and starves the GPU", "This latency is why renderers issue queries early, "
+         "use last frame's answers (temporal coherence) or test hierarchies of boxes."),
+        ("The query must read every pixel of the screen", "It rasterizes only the proxy's "
+         "pixels; a small box costs little fill."),
+        ("It works only when objects are drawn back to front", "The opposite: front-to-back "
+         "order fills the depth buffer with near occluders first, so later queries find them; "
+         "back to front nothing is ever hidden yet."),
+        correct=1),
+    _mc(5, "ch05-hom-approximate",
+        "Hierarchical occlusion maps cull a box when the covering texels' opacity is at least "
+        "a threshold (say 0.9) and the box is behind the depth estimate. Why is this "
+        "approximate culling?",
+        ("Because the opacity pyramid takes the maximum of 2 x 2 texels", "It averages: a texel "
+         "is the fraction of its pixels covered by occluders."),
+        ("Because a texel that is 90 % covered may let the box show through the other 10 %",
+         "With a threshold below 1 a box seen through small gaps can be culled: a few pixels "
+         "may be wrong, traded for more culling."),
+        ("Because the depth test uses the box's farthest depth", "It uses the box's nearest "
+         "depth against the farthest occluder depth of the tile: that part is conservative."),
+        ("Because the occluders are drawn at lower resolution than the screen", "A coarser "
+         "map costs accuracy in what counts as covered, but the approximation the threshold "
+         "introduces is the one asked about."),
+        correct=1),
 ]
