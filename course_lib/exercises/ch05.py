@@ -74,3 +74,9 @@ EXERCISES = (
     PainterFailure,
     RayCastingCount,
 )
+
+# Issue 21: BSP trees by hand (a plan of segments)
+from ._ch05.bsp import BSPBuildTree, BSPPaintOrder  # noqa: E402
+
+__all__ += ["BSPBuildTree", "BSPPaintOrder"]
+EXERCISES = EXERCISES + (BSPBuildTree, BSPPaintOrder)
