@@ -228,3 +228,15 @@ def test_bad_labels_order_and_eye():
         vis.bsp2d_back_to_front(tree, [np.inf, 2])
     with pytest.raises(TypeError, match="BSPTree2D"):
         vis.bsp2d_back_to_front("tree", [1, 2])
+
+
+def test_a_deep_chain_needs_no_recursion():
+    # the edges of a convex polygon, counter-clockwise: each has all the others in front (its
+    # left is the inside), so the tree is a chain as deep as the polygon has edges
+    t = np.linspace(0, 2 * np.pi, 1501)[:-1]
+    p = np.c_[np.cos(t), np.sin(t)]
+    tree = vis.build_bsp_2d(np.stack([p, np.roll(p, -1, axis=0)], axis=1))
+    assert tree.depth == tree.n_nodes == 1500 and tree.n_splits == 0
+    out = vis.bsp2d_back_to_front(tree, [0, 0])     # inside: every edge is seen from its front
+    assert len(out.labels) == 1500 and all(s.side == 1 for s in out.steps)
+    assert tree.describe().count("\n") == 1499

@@ -186,19 +186,28 @@ class BSPTree2D(NamedTuple):
 
 
 def _walk_nodes(node, visit):
-    if node is None:
-        return
-    visit(node)
-    _walk_nodes(node.front, visit)
-    _walk_nodes(node.back, visit)
+    """Preorder (node, front, back) without recursion: a deep tree is no problem."""
+    stack = [node]
+    while stack:
+        node = stack.pop()
+        if node is not None:
+            visit(node)
+            stack += [node.back, node.front]
 
 
 def _draw_subtrees(node, indent, lines):
-    kids = [(k, c) for k, c in (("front", node.front), ("back", node.back)) if c is not None]
-    for i, (kind, child) in enumerate(kids):
-        last = i == len(kids) - 1
+    """The lines of the subtrees below `node`, front child first (no recursion)."""
+    def push(node, indent):
+        kids = [(k, c) for k, c in (("front", node.front), ("back", node.back)) if c is not None]
+        for i, (kind, child) in reversed(list(enumerate(kids))):
+            stack.append((child, kind, indent, i == len(kids) - 1))
+
+    stack = []
+    push(node, indent)
+    while stack:
+        child, kind, indent, last = stack.pop()
         lines.append(f"{indent}{'└─' if last else '├─'} {kind}: {child.label}")
-        _draw_subtrees(child, indent + ("   " if last else "│  "), lines)
+        push(child, indent + ("   " if last else "│  "))
 
 
 def _as_segments(segments, labels, order):
@@ -336,7 +345,13 @@ def build_bsp_2d(segments, order=None, labels=None, choose="order", eps=1e-9):
 
 
 def _tree_depth(node):
-    return 0 if node is None else 1 + max(_tree_depth(node.front), _tree_depth(node.back))
+    deepest, stack = 0, [(node, 1)]
+    while stack:
+        node, level = stack.pop()
+        if node is not None:
+            deepest = max(deepest, level)
+            stack += [(node.front, level + 1), (node.back, level + 1)]
+    return deepest
 
 
 def _line_sides(part, items, eps):
@@ -364,8 +379,21 @@ def _part_label(label, source_label, k):
 
 
 def _build_node(items, rank, choose, eps, splits, names):
-    if not items:
-        return None
+    """The tree of `items` (in order), built with an explicit stack (no recursion limit)."""
+    root = _one_node(items, rank, choose, eps, splits, names)
+    stack = [root]
+    while stack:
+        node, front, back = stack.pop()
+        for attr, todo in (("front", front), ("back", back)):
+            if todo:
+                child = _one_node(todo, rank, choose, eps, splits, names)
+                setattr(node, attr, child[0])
+                stack.append(child)
+    return root[0]
+
+
+def _one_node(items, rank, choose, eps, splits, names):
+    """One node: its partition, collinear fragments, and the sorted front and back lists."""
     pick = _fewest_cuts(items, eps) if choose == "fewest_splits" and len(items) > 2 else 0
     part = items[pick]
     rest = items[:pick] + items[pick + 1:]
@@ -391,9 +419,7 @@ def _build_node(items, rank, choose, eps, splits, names):
                 (front if a > 0 else back).append(p1)
                 (back if a > 0 else front).append(p2)
     key = (lambda f: (rank[f.source], f.label))
-    node.front = _build_node(sorted(front, key=key), rank, choose, eps, splits, names)
-    node.back = _build_node(sorted(back, key=key), rank, choose, eps, splits, names)
-    return node
+    return node, sorted(front, key=key), sorted(back, key=key)
 
 
 
@@ -522,17 +548,22 @@ def bsp2d_front_to_back(tree, eye, eps=1e-9):
 
 
 def _paint_2d(node, e, eps, frags, steps):
-    if node is None:
-        return
-    value = float(node.normal @ e - node.offset)
-    side = 0 if abs(value) <= eps else (1 if value > 0 else -1)
-    near, far = ("back", "front") if side < 0 else ("front", "back")
-    where = {1: "in front of", -1: "behind", 0: "on the line of"}[side]
-    text = (f"eye {where} {node.label} (s = {value:.3g}): paint its {far} subtree, then "
-            f"{node.label}, then its {near} subtree")
-    if side == 0:
-        text += " (on the line: either order is right, back first chosen)"
-    steps.append(BSPStep2D(node.label, side, value, far, near, text))
-    _paint_2d(getattr(node, far), e, eps, frags, steps)
-    frags.extend(node.fragments)
-    _paint_2d(getattr(node, near), e, eps, frags, steps)
+    """Far subtree, node, near subtree at every node, with an explicit stack."""
+    stack = [(True, node)]
+    while stack:
+        visit, node = stack.pop()
+        if node is None:
+            continue
+        if not visit:
+            frags.extend(node.fragments)
+            continue
+        value = float(node.normal @ e - node.offset)
+        side = 0 if abs(value) <= eps else (1 if value > 0 else -1)
+        near, far = ("back", "front") if side < 0 else ("front", "back")
+        where = {1: "in front of", -1: "behind", 0: "on the line of"}[side]
+        text = (f"eye {where} {node.label} (s = {value:.3g}): paint its {far} subtree, then "
+                f"{node.label}, then its {near} subtree")
+        if side == 0:
+            text += " (on the line: either order is right, back first chosen)"
+        steps.append(BSPStep2D(node.label, side, value, far, near, text))
+        stack += [(True, getattr(node, near)), (False, node), (True, getattr(node, far))]
