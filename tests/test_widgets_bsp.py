@@ -11,12 +11,12 @@ from course_lib.widgets import bsp as W  # noqa: E402
 
 
 def test_scene_of_the_lesson_plan_by_hand():
-    s = W.scene(W.State(eye_x=1, eye_y=4, step=5))
+    s = W.scene(W.State(preset="lesson", eye_x=1, eye_y=4, step=5))
     assert s["order"] == ["d", "b1", "a", "c", "b2"]           # worked out in the lesson
     assert s["current"] == "b2" and s["painted"] == 5
     assert s["edges"] == [("b2", "c", "b"), ("b1", "d", "b"), ("a", "b2", "f"),
                           ("a", "b1", "f")[:2] + ("b",)]
-    s = W.scene(W.State(eye_x=4, eye_y=1, step=0))
+    s = W.scene(W.State(preset="lesson", eye_x=4, eye_y=1, step=0))
     assert s["order"] == ["b2", "c", "a", "b1", "d"] and s["current"] is None
 
 
@@ -61,7 +61,7 @@ def picture(ex):
     return ex.png(), ex.info.value
 
 
-@pytest.mark.parametrize("control, value", [("preset", "room"), ("order", "reversed order"),
+@pytest.mark.parametrize("control, value", [("preset", "lesson"), ("order", "reversed order"),
                                             ("eye_x", 6.0), ("eye_y", 0.0), ("step", 2)])
 def test_every_control_changes_the_drawing(control, value):
     ex = W.BSPExplorer()
@@ -76,9 +76,20 @@ def test_every_control_changes_the_drawing(control, value):
     assert ex.step.max == len(s["order"])
 
 
+@pytest.mark.parametrize("order", W.ORDERS[1:])
+def test_every_build_order_changes_the_default_picture(order):
+    ex = W.BSPExplorer()
+    before = ex.png()
+    ex.order.value = order
+    assert ex.png() != before
+
+
 def test_step_range_follows_the_tree():
     ex = W.BSPExplorer()
-    ex.preset.value = "room"
+    assert ex.step.max == 10
+    ex.preset.value = "lesson"
+    assert ex.step.max == 5 and ex.state.step == 4
+    ex.preset.value = "pinwheel"
     n = len(W.scene(ex.state)["order"])
     assert ex.step.max == n > 5
     ex.step.value = n

@@ -21,7 +21,7 @@ __all__ = ["BSPExplorer", "ORDERS", "PRESETS", "State", "scene"]
 #: The plans (segments a -> b; the front is on the left).
 PRESETS = {
     "lesson": [[[0, 2], [6, 2]], [[2, 0], [2, 4]], [[4, 3], [5, 5]], [[5, 0], [3, 1]]],
-    "room": [[[1, 1], [7, 1]], [[7, 6], [1, 6]], [[4, 0], [4, 3]], [[2, 4], [6, 3]],
+    "room": [[[1, 1], [7, 1]], [[7, 6], [1, 6]], [[5.5, 0], [5.5, 3]], [[2, 4], [6, 3]],
              [[6, 5], [5, 8]], [[0, 7], [3, 4]]],
     "pinwheel": [[[1, 3], [6, 3]], [[5, 1], [5, 7]], [[7, 5], [2, 5]], [[3, 7], [3, 1]],
                  [[3.5, 4.5], [4.5, 3.5]]],
@@ -39,14 +39,14 @@ class State:
     Examples
     --------
     >>> State().preset, State().order, State().step
-    ('lesson', 'given order', 5)
+    ('room', 'given order', 4)
     """
 
-    preset: str = "lesson"
+    preset: str = "room"
     order: str = "given order"
-    eye_x: float = 1.0
-    eye_y: float = 4.0
-    step: int = 5
+    eye_x: float = 0.5
+    eye_y: float = 3.0
+    step: int = 4
 
 
 def _tree_for(preset, order):
@@ -91,7 +91,7 @@ def scene(state):
 
     Examples
     --------
-    >>> s = scene(State(eye_x=1, eye_y=4, step=2))
+    >>> s = scene(State(preset="lesson", eye_x=1, eye_y=4, step=2))
     >>> s["order"], s["current"]
     (['d', 'b1', 'a', 'c', 'b2'], 'b1')
     """
@@ -136,6 +136,7 @@ class BSPExplorer(Explorer):
     Examples
     --------
     >>> ex = BSPExplorer()
+    >>> ex.preset.value = "lesson"
     >>> ex.eye_x.value = 4.0
     >>> ex.eye_y.value = 1.0
     >>> scene(ex.state)["order"]
@@ -184,7 +185,9 @@ class BSPExplorer(Explorer):
                               value=self.state.order)
         self.eye_x = slider("eye x", self.state.eye_x, -1, 9, 0.25)
         self.eye_y = slider("eye y", self.state.eye_y, -1, 9, 0.25)
-        self.step = slider("painted", self.state.step, 0, 5, 1, kind=w.IntSlider)
+        first = scene(self.state)
+        self.step = slider("painted", self.state.step, 0, len(first["order"]), 1,
+                           kind=w.IntSlider)
         bind(self.state, {"preset": self.preset, "order": self.order, "eye_x": self.eye_x,
                           "eye_y": self.eye_y, "step": self.step}, self.update)
         self.info = panel(width="660px")
