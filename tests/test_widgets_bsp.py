@@ -18,6 +18,12 @@ def test_scene_of_the_lesson_plan_by_hand():
                           ("a", "b1", "f")[:2] + ("b",)]
     s = W.scene(W.State(preset="lesson", eye_x=4, eye_y=1, step=0))
     assert s["order"] == ["b2", "c", "a", "b1", "d"] and s["current"] is None
+    assert s["line"] is None
+    # from (4, 1) the eye is behind b1 (x > 2): painting b1 (step 4) takes the "behind" branch
+    s = W.scene(W.State(preset="lesson", eye_x=4, eye_y=1, step=4))
+    assert s["current"] == "b1" and "behind" in W.PSEUDOCODE[s["line"] - 1]
+    s = W.scene(W.State(preset="lesson", eye_x=1, eye_y=4, step=3))
+    assert s["current"] == "a" and "in front" in W.PSEUDOCODE[s["line"] - 1]
 
 
 @pytest.mark.parametrize("preset", list(W.PRESETS))

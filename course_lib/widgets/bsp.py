@@ -16,7 +16,7 @@ from ..visibility import bsp2d_back_to_front, build_bsp_2d
 from . import _style
 from ._base import Explorer, bind, labelled, panel, slider
 
-__all__ = ["BSPExplorer", "ORDERS", "PRESETS", "State", "scene"]
+__all__ = ["BSPExplorer", "ORDERS", "PRESETS", "PSEUDOCODE", "State", "scene"]
 
 #: The plans (segments a -> b; the front is on the left).
 PRESETS = {
@@ -29,6 +29,14 @@ PRESETS = {
 #: The build orders offered: how the partitions are taken.
 ORDERS = ("given order", "reversed order", "rotated by one", "fewest splits")
 _MAX = 16                  # artists pooled for nodes and fragments
+#: The traversal, as the explorer's panel shows it (the branch taken at the node being painted
+#: is highlighted).
+PSEUDOCODE = ("paint(node):",
+              "  if node is empty: return",
+              "  if s(eye) >= 0 (eye in front of node's line):",
+              "    paint(node.back); draw node; paint(node.front)",
+              "  else (eye behind):",
+              "    paint(node.front); draw node; paint(node.back)")
 _EDGE = "#555555"
 
 
@@ -87,7 +95,8 @@ def scene(state):
         ``tree`` (BSPTree2D), ``order`` (fragment labels back to front), ``steps`` (the node
         decisions), ``fragments`` (k, 2, 2) in drawing order, ``painted`` (how many are
         painted), ``current`` (the node label being painted, or None), ``positions`` (node ->
-        (x, y) in the tree panel), ``edges`` ((parent, child, "f"/"b")), ``text``.
+        (x, y) in the tree panel), ``edges`` ((parent, child, "f"/"b")), ``line`` (the line of
+        :data:`PSEUDOCODE` taken at the current node, or None), ``text``.
 
     Examples
     --------
@@ -109,7 +118,9 @@ def scene(state):
             node_of[lab] = st.node
     current = node_of[out.labels[k - 1]] if k else None
     pos, edges = _layout(tree)
-    decision = next((st.text for st in out.steps if st.node == current), "")
+    step = next((st for st in out.steps if st.node == current), None)
+    decision = step.text if step else ""
+    line = None if step is None else (3 if step.side >= 0 else 5)
     text = (f"Tree: {tree.n_nodes} nodes, {len(tree.fragments)} fragments from "
             f"{len(tree.labels)} segments ({tree.n_splits} cut), depth {tree.depth}. "
             f"Back to front from the eye ({state.eye_x:g}, {state.eye_y:g}): "
@@ -117,7 +128,8 @@ def scene(state):
             + (f". Step {k}: painting {out.labels[k - 1]}; at node {current}: {decision}."
                if k else ". Step 0: nothing painted yet."))
     return {"tree": tree, "order": out.labels, "steps": out.steps, "fragments": frags,
-            "painted": k, "current": current, "positions": pos, "edges": edges, "text": text}
+            "painted": k, "current": current, "positions": pos, "edges": edges, "line": line,
+            "text": text}
 
 
 def _front_ticks(frags):
@@ -191,8 +203,9 @@ class BSPExplorer(Explorer):
         bind(self.state, {"preset": self.preset, "order": self.order, "eye_x": self.eye_x,
                           "eye_y": self.eye_y, "step": self.step}, self.update)
         self.info = panel(width="660px")
+        self.code = panel(width="370px")
         self.widget = w.VBox([self.fig.canvas,
-                              w.HBox([w.VBox([self.preset, self.order]),
+                              w.HBox([w.VBox([self.preset, self.order, self.code]),
                                       w.VBox([self.eye_x, self.eye_y, self.step])]),
                               self.info])
         self._last = None
@@ -257,6 +270,9 @@ class BSPExplorer(Explorer):
             else:
                 t.set_visible(False)
         self.info.value = s["text"]
+        self.code.value = "<pre style='margin: 0; font-size: 11px'>" + "\n".join(
+            f"<span style='background: #ffd54f'>{text}</span>" if i == s["line"] else text
+            for i, text in enumerate(PSEUDOCODE)) + "</pre>"
 
 
 def draw_colour(i):
