@@ -1287,3 +1287,28 @@ def test_fact_ch05_hierarchical():
     zs = [0.1, 0.5, 0.7]
     assert (V.draw_if_visible(r, zs, 16, 16).drawn.sum()
             < V.draw_if_visible(r, zs, 16, 16, order="back_to_front").drawn.sum())
+
+
+def test_fact_ch05_bsp():
+    from course_lib.visibility import bsp2d_back_to_front, build_bsp_2d
+    from shapely.geometry import LineString, Point
+    assert answer_text("ch05-bsp-traversal").startswith("The back subtree")
+    assert truth("ch05-bsp-any-viewpoint") and truth("ch05-bsp-root-whole")
+    rng = np.random.default_rng(5)
+    for _ in range(10):
+        a = rng.uniform(-4, 4, (8, 2))
+        segs = np.stack([a, a + rng.uniform(-3, 3, (8, 2))], axis=1)
+        order = rng.permutation(8).tolist()
+        tree = build_bsp_2d(segs, order=order)
+        first = tree.labels[order[0]]
+        assert [f.label for f in tree.fragments if f.source == order[0]] == [first]
+        # from several eyes, the one fixed tree gives an order in which a later fragment is
+        # never behind an earlier one along a ray (checked with shapely)
+        for eye in rng.uniform(-5, 5, (3, 2)):
+            out = bsp2d_back_to_front(tree, eye)
+            lines = [LineString([f.start, f.end]) for f in out.fragments]
+            for ang in np.linspace(0, 2 * np.pi, 90, endpoint=False) + 0.01:
+                ray = LineString([eye, eye + 50 * np.array([np.cos(ang), np.sin(ang)])])
+                dists = [Point(eye).distance(ln.intersection(ray)) for ln in lines
+                         if ln.intersects(ray)]
+                assert all(d1 <= d0 + 1e-9 for d0, d1 in zip(dists, dists[1:]))

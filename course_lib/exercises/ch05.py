@@ -81,3 +81,8 @@ from ._ch05.hierarchical import (HOMOpacity, HZBRejection, OcclusionQueryCount, 
 
 __all__ += ["HOMOpacity", "HZBRejection", "OcclusionQueryCount", "ZPyramidNextLevel"]
 EXERCISES += (ZPyramidNextLevel, HZBRejection, OcclusionQueryCount, HOMOpacity)
+# Issue 21: BSP trees by hand (a plan of segments)
+from ._ch05.bsp import BSPBuildTree, BSPPaintOrder  # noqa: E402
+
+__all__ += ["BSPBuildTree", "BSPPaintOrder"]
+EXERCISES = EXERCISES + (BSPBuildTree, BSPPaintOrder)

@@ -162,4 +162,33 @@ QUESTIONS = [
          "map costs accuracy in what counts as covered, but the approximation the threshold "
          "introduces is the one asked about."),
         correct=1),
+
+    # Issue 21: BSP trees by hand (course_lib.visibility.bsp2d)
+    _mc(5, "ch05-bsp-traversal",
+        "The eye lies in front of the partition line of a BSP node. In which order does the "
+        "painter's traversal draw what is stored at and below that node?",
+        ("The front subtree, the node, then the back subtree", "That is front to back: the "
+         "subtree on the eye's side is drawn first and then painted over by the far side."),
+        ("The back subtree, the node, then the front subtree", "The far side first: nothing in "
+         "the back half-plane can hide the node or the front half-plane from this eye."),
+        ("The node, then the back subtree, then the front subtree", "The node may hide parts of "
+         "the back subtree, so it must be drawn after it, not before."),
+        ("The nearer of the two subtrees by distance to its first segment", "No distances are "
+         "compared: one sign test of the eye against the node's line decides."),
+        correct=1),
+    _tf(5, "ch05-bsp-any-viewpoint",
+        "A BSP tree built once for a static plan gives a correct back-to-front order from every "
+        "eye position; only the traversal (one side test per node) changes when the eye moves.",
+        True,
+        "The tree depends on the segments only; the eye enters only through the side test at "
+        "each node, so moving the eye reorders the traversal without rebuilding.",
+        "It is true: the tree is view-independent, and the eye only decides, node by node, "
+        "which subtree is painted first."),
+    _tf(5, "ch05-bsp-root-whole",
+        "When a BSP tree takes its partitions in a given order, the first segment of that order "
+        "is never split.", True,
+        "It becomes the root's partition before any other line exists, and a segment is only "
+        "cut by the lines of nodes above it.",
+        "It is true: the root's segment is the partition itself and is stored whole; only "
+        "segments placed below a partition can be cut by its line."),
 ]
