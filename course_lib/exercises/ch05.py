@@ -36,6 +36,7 @@ from ._ch05.sutherland_hodgman import SutherlandHodgmanArea, SutherlandHodgmanOn
 from ._ch05.zbuffer import ZBufferIds, ZBufferWrites
 from ._ch05.painter import PainterFailure, PaintersOrder
 from ._ch05.ray_casting import RayCastingCount
+from ._ch05.clip3d import ClipSpaceExitPoint, ClipSpaceLiangBarskyPairs, ClipSpaceOutcode
 
 __all__ = [
     "EXERCISES",
@@ -54,6 +55,9 @@ __all__ = [
     "SutherlandHodgmanOneSide",
     "ZBufferIds",
     "ZBufferWrites",
+    "ClipSpaceOutcode",
+    "ClipSpaceLiangBarskyPairs",
+    "ClipSpaceExitPoint",
 ]
 
 #: The exercises of chapter 5, in the order of the solutions notebook.
@@ -73,4 +77,7 @@ EXERCISES = (
     PaintersOrder,
     PainterFailure,
     RayCastingCount,
+    ClipSpaceOutcode,
+    ClipSpaceLiangBarskyPairs,
+    ClipSpaceExitPoint,
 )
