@@ -323,6 +323,8 @@ def test_clipping3d_every_control_changes_the_picture():
     assert "no plane yet" in ex.info.value and len(ex.face.get_data_3d()[0]) == 0
     ex.step.value = 5
     assert "Plane 5 (near)" in ex.info.value
+    started = clipping3d.ClippingExplorer3D(clipping3d.State(region="frustum", step=3))
+    assert started.step.value == 3 and "Plane 3 (bottom)" in started.info.value
 
 
 # --- z-buffer trace and hidden-surface explorer ---------------------------------------------

@@ -225,9 +225,9 @@ class ClippingExplorer3D(Explorer):
                                       style={"button_width": _style.button_width(*REGIONS)})
         bind(self.state, {"region": self.region, "turn_deg": self.turn, "tilt_deg": self.tilt,
                           "lift": self.lift}, self.update)
+        self.info = panel(width="380px")
         self.step, steps = step_controls(self._on_step, 7)
         self.step.value = self.state.step = min(max(int(self.state.step), 0), 6)
-        self.info = panel(width="380px")
         self.widget = beside(self.fig.canvas, w.VBox([self.region, self.turn, self.tilt,
                                                       self.lift, steps, self.info]))
         self._draw(s)
