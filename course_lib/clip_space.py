@@ -46,6 +46,7 @@ __all__ = [
     "clip_polygon_homogeneous",
     "clip_polygon_homogeneous_steps",
     "clip_segment_homogeneous",
+    "clip_segments_homogeneous",
     "clip_space_planes",
     "liang_barsky_table",
     "table_text",
@@ -228,6 +229,59 @@ def clip_segment_homogeneous(p0_h, p1_h):
         clipped = (start, end)
     return {"t_in": float(t_in), "t_out": float(t_out), "rows": rows, "clipped": clipped,
             "codes": (clip_outcode(a), clip_outcode(b))}
+
+
+def clip_segments_homogeneous(p0_h, p1_h):
+    r"""Liang-Barsky in clip space for many segments at once (vectorized).
+
+    The same rule as :func:`clip_segment_homogeneous`: with the boundary functions
+    :math:`f_k` at both ends, :math:`t_{in} = \max(0, \max_{p_k < 0} q_k/p_k)`,
+    :math:`t_{out} = \min(1, \min_{p_k > 0} q_k/p_k)`, rejected when :math:`t_{in} > t_{out}`
+    or some :math:`p_k = 0` with :math:`q_k < 0`.
+
+    Parameters
+    ----------
+    p0_h, p1_h : array_like, shape (n, 4)
+
+    Returns
+    -------
+    q0, q1 : ndarray, shape (n, 4)
+        The clipped end points in clip coordinates (the input ones where rejected).
+    t : ndarray, shape (n, 2)
+        ``t_in``, ``t_out`` of each segment.
+    visible : ndarray of bool, shape (n,)
+
+    Raises
+    ------
+    ValueError
+        For other shapes, the zero vector, or a segment with w = 0 at both ends.
+
+    Examples
+    --------
+    >>> q0, q1, t, visible = clip_segments_homogeneous([[-2, 0, 0, 1], [0, 0, 0, -1]],
+    ...                                                [[2, 0, 0, 1], [0, 0, 0.5, -2]])
+    >>> t[0].tolist(), visible.tolist()
+    ([0.25, 0.75], [True, False])
+    """
+    a = _homogeneous(p0_h, "p0_h")
+    b = _homogeneous(p1_h, "p1_h")
+    if a.ndim != 2 or a.shape != b.shape:
+        raise ValueError(f"p0_h and p1_h must both have shape (n, 4), got {a.shape} and "
+                         f"{b.shape}")
+    if np.any((a[:, 3] == 0) & (b[:, 3] == 0)):
+        bad = int(np.flatnonzero((a[:, 3] == 0) & (b[:, 3] == 0))[0])
+        raise ValueError(f"segment {bad} has w = 0 at both ends (it lies at infinity)")
+    f0, f1 = boundary_values(a), boundary_values(b)
+    p, q = f0 - f1, f0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = q / p
+    t_in = np.max(np.where(p < 0, t, 0.0), axis=-1, initial=0.0)
+    t_out = np.min(np.where(p > 0, t, 1.0), axis=-1, initial=1.0)
+    visible = (t_in <= t_out) & ~np.any((p == 0) & (q < 0), axis=-1)
+    d = b - a
+    q0 = np.where((t_in == 0)[:, None] | ~visible[:, None], a, a + t_in[:, None] * d)
+    q1 = np.where((t_out == 1)[:, None] | ~visible[:, None], b, a + t_out[:, None] * d)
+    return q0, q1, np.column_stack([t_in, t_out]), visible
 
 
 def liang_barsky_table(p0, p1, box_min=(-1, -1, -1), box_max=(1, 1, 1)):

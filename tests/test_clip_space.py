@@ -276,3 +276,22 @@ def test_table_text_lists_six_rows():
     text = clip_space.table_text(clip_space.liang_barsky_table([-2, 0.5, 0], [2, 0.5, 3]))
     lines = text.splitlines()
     assert len(lines) == 7 and [ln.split()[0] for ln in lines[1:]] == list(clipping.BIT_NAMES)
+
+
+def test_many_segments_match_one_at_a_time():
+    rng = np.random.default_rng(7)
+    a, b = rng.uniform(-3, 3, (2, 400, 4))
+    a[:100, 3] = np.abs(a[:100, 3])
+    q0, q1, t, visible = clip_space.clip_segments_homogeneous(a, b)
+    for i in range(len(a)):
+        r = clip_space.clip_segment_homogeneous(a[i], b[i])
+        assert visible[i] == (r["clipped"] is not None)
+        if visible[i]:
+            assert np.allclose(t[i], [r["t_in"], r["t_out"]])
+            assert np.allclose([q0[i], q1[i]], r["clipped"])
+    assert 20 < visible.sum() < 380
+    with pytest.raises(ValueError, match="segment 1 has w = 0 at both ends"):
+        clip_space.clip_segments_homogeneous([[0, 0, 0, 1], [1, 0, 0, 0]],
+                                             [[1, 0, 0, 1], [0, 1, 0, 0]])
+    with pytest.raises(ValueError, match=r"shape \(n, 4\)"):
+        clip_space.clip_segments_homogeneous([0, 0, 0, 1], [1, 0, 0, 1])
