@@ -1,7 +1,8 @@
 """Chapter 5, clipping in 3D and in clip space: Liang-Barsky in homogeneous coordinates on many
 world segments (projected by the camera matrix, clipped against -w <= x, y, z <= w, mapped back)
 against VTK clipping the same world segments by the six frustum planes (vtkClipPolyData, one
-plane after another), and the 3D clipping explorer's update (turn slider, step control)."""
+plane after another), and the updates of the 3D clipping explorer (turn slider, step control)
+and of the clip-before-or-after-the-divide explorer."""
 import numpy as np
 
 from benchmarks import operation_row
@@ -77,7 +78,8 @@ def operations(quick=False):
 
 
 def widgets(quick=False):
-    """Median update of the 3D clipping explorer: the turn slider and the step control."""
+    """Median update of the 3D clipping explorer (turn slider, step control) and of the
+    clip-before-or-after-the-divide explorer (B's depth slider)."""
     import matplotlib
 
     matplotlib.use("module://ipympl.backend_nbagg")
@@ -95,5 +97,15 @@ def widgets(quick=False):
             widget_row("3D clipping explorer (step control)",
                        lambda i: setattr(explorer.step, "value", i % 7),
                        explorer.fig.canvas.draw, repeat)]
+    plt.close(explorer.fig)
+
+    from course_lib.widgets import homogeneous_clip
+
+    explorer = homogeneous_clip.HomogeneousClipExplorer()
+    explorer.fig.canvas.draw()
+    rows.append(widget_row("clip before/after the divide explorer (B: z slider)",
+                           lambda i: setattr(explorer.b_z, "value", round(-7.5 + 0.5 * (i % 22),
+                                                                          1)),
+                           explorer.fig.canvas.draw, repeat))
     plt.close(explorer.fig)
     return rows
