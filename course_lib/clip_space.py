@@ -55,7 +55,7 @@ __all__ = [
 _AXIS_SIGN = tuple((k // 2, 1.0 if k % 2 == 0 else -1.0) for k in range(6))   # f = w + s x_axis
 
 
-def _homogeneous(value, name):
+def _clip_points(value, name):
     """Homogeneous points, shape (..., 4), none of them the zero vector."""
     p = as_points(value, name, dims=4)
     if np.any(np.all(p == 0, axis=-1)):
@@ -89,7 +89,7 @@ def boundary_values(points_h):
     >>> boundary_values([1, 2, -3, 2]).tolist()
     [3.0, 1.0, 4.0, 0.0, -1.0, 5.0]
     """
-    p = _homogeneous(points_h, "points_h")
+    p = _clip_points(points_h, "points_h")
     w = p[..., 3:4]
     xyz = np.repeat(p[..., :3], 2, axis=-1)              # x x y y z z
     return w + np.array([1.0, -1.0] * 3) * xyz
@@ -212,8 +212,8 @@ def clip_segment_homogeneous(p0_h, p1_h):
     >>> r["t_out"], r["clipped"][1].tolist()                      # stops at the eye plane
     (0.5, [0.0, 0.0, 0.0, 0.0])
     """
-    a = _homogeneous(p0_h, "p0_h")
-    b = _homogeneous(p1_h, "p1_h")
+    a = _clip_points(p0_h, "p0_h")
+    b = _clip_points(p1_h, "p1_h")
     if a.shape != (4,) or b.shape != (4,):
         raise ValueError(f"p0_h and p1_h must be single homogeneous points (shape (4,)), got "
                          f"shapes {a.shape} and {b.shape}")
@@ -263,8 +263,8 @@ def clip_segments_homogeneous(p0_h, p1_h):
     >>> t[0].tolist(), visible.tolist()
     ([0.25, 0.75], [True, False])
     """
-    a = _homogeneous(p0_h, "p0_h")
-    b = _homogeneous(p1_h, "p1_h")
+    a = _clip_points(p0_h, "p0_h")
+    b = _clip_points(p1_h, "p1_h")
     if a.ndim != 2 or a.shape != b.shape:
         raise ValueError(f"p0_h and p1_h must both have shape (n, 4), got {a.shape} and "
                          f"{b.shape}")
@@ -371,7 +371,7 @@ def clip_polygon_homogeneous_steps(poly_h):
     >>> [(name, len(poly)) for name, poly in clip_polygon_homogeneous_steps(tri)][:2]
     [('left', 4), ('right', 5)]
     """
-    poly = _homogeneous(poly_h, "poly_h")
+    poly = _clip_points(poly_h, "poly_h")
     if poly.ndim != 2 or len(poly) < 3:
         raise ValueError(f"poly_h must have at least 3 vertices (shape (m, 4), m >= 3), got "
                          f"shape {poly.shape}")
@@ -436,8 +436,8 @@ def clip_after_divide(p0_h, p1_h):
     >>> r["clipped"][1].tolist(), r["correct"][1].tolist()        # wrong side vs the right one
     ([-1.0, 0.0, 0.0], [1.0, 0.0, 1.0])
     """
-    a = _homogeneous(p0_h, "p0_h")
-    b = _homogeneous(p1_h, "p1_h")
+    a = _clip_points(p0_h, "p0_h")
+    b = _clip_points(p1_h, "p1_h")
     if a.shape != (4,) or b.shape != (4,):
         raise ValueError(f"p0_h and p1_h must be single homogeneous points (shape (4,)), got "
                          f"shapes {a.shape} and {b.shape}")
