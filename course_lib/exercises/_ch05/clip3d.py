@@ -74,8 +74,8 @@ class ClipSpaceOutcode(DrawnExercise):
     advice = (r"Compare each coordinate with $\pm w$ (not with $\pm 1$): left $x < -w$ = 1, "
               r"right $x > w$ = 2, bottom $y < -w$ = 4, top $y > w$ = 8, near $z < -w$ = 16, "
               r"far $z > w$ = 32, and add the values of the bits that are set.")
-    off_by_one = ("Off by one: only the left bit (value 1, x < -w) differs. Compare x with -w "
-                  "again.")
+    off_by_one = ("Your code is one off the right one. Check the left bit (value 1, x < -w) "
+                  "first, then add the bit values again.")
 
     def draw(self, rng):
         w = float(pick(rng, (2, 3, 4, 5, -2, -3)))
