@@ -17,7 +17,8 @@ import exercise_harness as harness
 from exercise_harness import SEEDS
 from course_lib.exercises._ch05 import clip3d as module
 
-NAMES = ["ClipSpaceOutcode", "ClipSpaceLiangBarskyPairs", "ClipSpaceExitPoint"]
+NAMES = ["ClipSpaceOutcode", "ClipSpaceLiangBarskyPairs", "ClipSpaceExitPoint",
+         "ClipSpaceSutherlandHodgman"]
 ch05 = SimpleNamespace(EXERCISES=[getattr(module, n) for n in NAMES],
                        **{n: getattr(module, n) for n in NAMES})
 
@@ -92,18 +93,68 @@ def exit_point(ex):
     return right, mistakes
 
 
+def sh_one_plane(tri, f, cut_t):
+    """Sutherland-Hodgman by the four rules; `f` the boundary function (>= 0 inside), `cut_t`
+    the parameter at which a crossing edge S -> E is cut."""
+    out = []
+    for i in range(len(tri)):
+        S, E = tri[i], tri[(i + 1) % len(tri)]
+        s_in, e_in = f(S) >= 0, f(E) >= 0
+        if s_in and e_in:
+            out.append(E)
+        elif s_in:
+            out.append(S + cut_t(S, E) * (E - S))
+        elif e_in:
+            out.append(S + cut_t(S, E) * (E - S))
+            out.append(E)
+    return np.array(out)
+
+
+def sutherland_hodgman(ex):
+    k = module._SIDES.index(ex.side)
+    axis, sign = k // 2, (1.0 if k % 2 == 0 else -1.0)
+    tri = np.asarray(ex.triangle, float)
+
+    def f(p):
+        return p[3] + sign * p[axis]
+
+    right = sh_one_plane(tri, f, lambda S, E: f(S) / (f(S) - f(E)))
+    originals = [i for i, p in enumerate(right) if not any(np.allclose(p, q) for q in tri)]
+    mistakes = {
+        "missing intersection vertex": harness.Either(
+            [np.delete(right, i, axis=0) for i in originals]),
+        "reversed order": right[::-1],
+        "kept the outside part": sh_one_plane(tri, lambda p: -f(p),
+                                              lambda S, E: f(S) / (f(S) - f(E))),
+    }
+    crossing = [(tri[i], tri[(i + 1) % 3]) for i in range(3)
+                if (f(tri[i]) >= 0) != (f(tri[(i + 1) % 3]) >= 0)]
+    if all(S[3] > 0 and E[3] > 0 for S, E in crossing):
+        def ndc_t(S, E):
+            s, e = S[axis] / S[3], E[axis] / E[3]
+            return (-sign - s) / (e - s)
+        mistakes["t after the divide"] = sh_one_plane(tri, f, ndc_t)
+    return right, mistakes
+
+
 SPECS = {"ClipSpaceOutcode": (outcode, "number"),
          "ClipSpaceLiangBarskyPairs": (pairs, "table"),
-         "ClipSpaceExitPoint": (exit_point, "point")}
+         "ClipSpaceExitPoint": (exit_point, "point"),
+         "ClipSpaceSutherlandHodgman": (sutherland_hodgman, "polygon")}
 GARBAGE = {"number": ["v", {"v": 1}, [1, 2], [[1], [2, 3]], math.nan],
            "table": ["t", {"a": 1}, np.eye(4), [1, 2, 3], [[math.nan] * 2] * 6],
-           "point": ["p", {"a": 1}, [1, 2], [[1, 2, 3]] * 2, [math.nan] * 3]}
+           "point": ["p", {"a": 1}, [1, 2], [[1, 2, 3]] * 2, [math.nan] * 3],
+           "polygon": ["poly", {"a": 1}, [1, 2, 3, 4], [[1, 2, 3]] * 3, [[math.inf, 0, 0, 1]]]}
 exercises = harness.variants(ch05)
 
 
 def same(a, b, form=None):
-    return np.asarray(a, float).shape == np.asarray(b, float).shape and np.allclose(
-        np.asarray(a, float), np.asarray(b, float), atol=1e-7)
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    if a.shape != b.shape:
+        return False
+    if form == "polygon":                               # any starting vertex
+        return any(np.allclose(np.roll(a, s, axis=0), b, atol=1e-7) for s in range(len(a)))
+    return np.allclose(a, b, atol=1e-7)
 
 
 globals().update(harness.common_tests(ch05, SPECS, GARBAGE, exercises, at_least=3,
@@ -116,7 +167,10 @@ def test_right_answer_is_accepted(name):
     solve, _ = SPECS[name]
     for ex in exercises(name):
         right, _ = solve(ex)
-        harness.assert_accepted(ex, [right, np.round(right, 3), np.asarray(right).tolist()])
+        answers = [right, np.round(right, 3), np.asarray(right).tolist()]
+        if name == "ClipSpaceSutherlandHodgman":
+            answers.append(np.roll(right, 1, axis=0))          # another starting vertex
+        harness.assert_accepted(ex, answers)
 
 
 @pytest.mark.parametrize("name", SPECS)
@@ -124,7 +178,7 @@ def test_worked_solution_and_hints(name):
     solve, _ = SPECS[name]
     for ex in exercises(name, range(20)):
         worked = ex.worked()
-        assert np.allclose(worked.answer, solve(ex)[0], atol=1e-9) and ex.check(worked.answer)
+        assert same(worked.answer, solve(ex)[0], SPECS[name][1]) and ex.check(worked.answer)
         assert len(ex.hints()) >= 3
     assert len({" ".join(ex.worked().steps) for ex in exercises(name, range(20))}) >= 10
 
@@ -138,3 +192,8 @@ def test_exit_point_lies_on_the_cube_and_p1_behind_the_eye():
     for ex in exercises("ClipSpaceExitPoint"):
         assert ex.p1[3] < 0 < ex.p0[3]
         assert np.isclose(np.abs(ex.expected).max(), 1.0)
+
+
+def test_sutherland_hodgman_variants_have_a_vertex_behind_the_eye_sometimes():
+    behind = sum((ex.triangle[:, 3] < 0).any() for ex in exercises("ClipSpaceSutherlandHodgman"))
+    assert 0.15 * len(SEEDS) < behind < 0.5 * len(SEEDS)

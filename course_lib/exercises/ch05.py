@@ -36,7 +36,8 @@ from ._ch05.sutherland_hodgman import SutherlandHodgmanArea, SutherlandHodgmanOn
 from ._ch05.zbuffer import ZBufferIds, ZBufferWrites
 from ._ch05.painter import PainterFailure, PaintersOrder
 from ._ch05.ray_casting import RayCastingCount
-from ._ch05.clip3d import ClipSpaceExitPoint, ClipSpaceLiangBarskyPairs, ClipSpaceOutcode
+from ._ch05.clip3d import (ClipSpaceExitPoint, ClipSpaceLiangBarskyPairs, ClipSpaceOutcode,
+                           ClipSpaceSutherlandHodgman)
 
 __all__ = [
     "EXERCISES",
@@ -58,6 +59,7 @@ __all__ = [
     "ClipSpaceOutcode",
     "ClipSpaceLiangBarskyPairs",
     "ClipSpaceExitPoint",
+    "ClipSpaceSutherlandHodgman",
 ]
 
 #: The exercises of chapter 5, in the order of the solutions notebook.
@@ -80,4 +82,5 @@ EXERCISES = (
     ClipSpaceOutcode,
     ClipSpaceLiangBarskyPairs,
     ClipSpaceExitPoint,
+    ClipSpaceSutherlandHodgman,
 )

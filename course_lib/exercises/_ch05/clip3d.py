@@ -12,12 +12,15 @@ right = 2, bottom = 4, top = 8, near = 16, far = 32, as :mod:`course_lib.clippin
 import numpy as np
 
 from ... import clip_space, clipping
-from ..core import DrawnExercise, Mistake, Worked, data_note, latex_fraction, latex_vector, pick
+from ..core import (UNANSWERED, DrawnExercise, Feedback, Mistake, Worked, data_note,
+                    latex_fraction, latex_vector, pick, read_floats)
+from . import _cyclic_match
 
 __all__ = [
     "ClipSpaceExitPoint",
     "ClipSpaceLiangBarskyPairs",
     "ClipSpaceOutcode",
+    "ClipSpaceSutherlandHodgman",
 ]
 
 _SIDES = clipping.BIT_NAMES
@@ -338,3 +341,176 @@ class ClipSpaceExitPoint(DrawnExercise):
             rf"Divide by $w = {latex_fraction(point[3])}$: NDC point "
             rf"${latex_vector(ndc)}$.",
         ], ndc)
+
+
+def _sh_words(points):
+    return ", ".join(f"${latex_vector(p)}$" for p in points)
+
+
+class ClipSpaceSutherlandHodgman(DrawnExercise):
+    r"""Sutherland-Hodgman: a triangle in clip coordinates against one plane of the view volume.
+
+    Inside is :math:`f_k \ge 0` for the side's boundary function (left :math:`w + x`, right
+    :math:`w - x`, ..., far :math:`w - z`). An edge :math:`S \to E` that crosses the plane is cut
+    at :math:`t = f_k(S) / (f_k(S) - f_k(E))`, all four coordinates interpolated; the answer is
+    the output polygon as homogeneous 4-vectors. Some variants have a vertex behind the eye.
+
+    Attributes: ``triangle`` (3 x 4), ``side`` (a name of ``clipping.BIT_NAMES``).
+
+    Examples
+    --------
+    >>> ex = ClipSpaceSutherlandHodgman(seed=1)
+    >>> ex.check(ex.expected).status, ex.check(np.roll(ex.expected, 1, axis=0)).status
+    ('correct', 'correct')
+    """
+
+    title = "Sutherland-Hodgman in clip space, one plane"
+    answer_form = "custom"
+    what = "the clipped polygon"
+
+    def draw(self, rng):
+        self.side = str(pick(rng, _SIDES))
+        self._k = _SIDES.index(self.side)
+        ws = [float(pick(rng, (1, 2, 3, 4))) for _ in range(3)]
+        if rng.random() < 0.3:
+            ws[int(rng.integers(3))] = float(pick(rng, (-1, -2)))
+        xyz = rng.integers(-4, 5, size=(3, 3)).astype(float)
+        self.triangle = np.column_stack([xyz, ws])
+        _, normal, offset = clip_space.clip_space_planes()[self._k]
+        self.expected = clipping._clip_by_plane(self.triangle, normal, offset)
+
+    def _f(self, p):
+        return _f_values(p)[self._k]
+
+    def acceptable(self):
+        f = [self._f(p) for p in self.triangle]
+        return bool(all(v != 0 for v in f) and any(v > 0 for v in f)
+                    and any(v < 0 for v in f))
+
+    def _intersections(self):
+        return [i for i, p in enumerate(self.expected)
+                if not np.any(np.all(np.isclose(self.triangle, p), axis=1))]
+
+    def _divided_cut(self):
+        """The polygon with every intersection found from t computed after the divide."""
+        axis, sign = self._k // 2, (1.0 if self._k % 2 == 0 else -1.0)
+        out = []
+        n = len(self.triangle)
+        for i in range(n):
+            S, E = self.triangle[i], self.triangle[(i + 1) % n]
+            fs, fe = self._f(S), self._f(E)
+            if (fs >= 0) != (fe >= 0):
+                if S[3] <= 0 or E[3] <= 0:
+                    return None                  # cannot even be divided
+                s, e = S[axis] / S[3], E[axis] / E[3]
+                t = (-sign - s) / (e - s)        # where the NDC coordinate reaches -1 or +1
+                cut = S + t * (E - S)
+            if fs >= 0 and fe >= 0:
+                out.append(E)
+            elif fs >= 0:
+                out.append(cut)
+            elif fe >= 0:
+                out.extend([cut, E])
+        return np.array(out)
+
+    def mistakes(self):
+        found = [Mistake(np.delete(self.expected, i, axis=0), r"An intersection vertex is "
+                         r"missing. Each edge that crosses the plane contributes its "
+                         r"intersection I: in $\to$ out outputs I, out $\to$ in outputs I and "
+                         r"then E.", "missing intersection vertex")
+                 for i in self._intersections()]
+        found.append(Mistake(self.expected[::-1], r"Your vertices run the other way round: go "
+                             r"through the edges $v_0 \to v_1$, $v_1 \to v_2$, $v_2 \to v_0$ in "
+                             r"order and append each edge's output.", "reversed order"))
+        _, normal, offset = clip_space.clip_space_planes()[self._k]
+        found.append(Mistake(clipping._clip_by_plane(self.triangle, -normal, -offset),
+                             rf"You kept the part **outside**: the inside of the {self.side} "
+                             rf"plane is ${_F_NAMES[self._k]} \ge 0$.", "kept the outside part"))
+        divided = self._divided_cut()
+        if divided is not None:
+            found.append(Mistake(divided, r"The intersection's $t$ was found after the divide "
+                                 r"(where $x/w$ reaches $\pm 1$ along the straight line between "
+                                 r"the divided end points) and then used on the homogeneous "
+                                 r"points. The divide is not linear, so that $t$ is another "
+                                 r"point: use $t = f(S) / (f(S) - f(E))$ with the undivided "
+                                 r"boundary function.", "t after the divide"))
+        return found
+
+    def separated(self, mistakes):
+        if any(_cyclic_match(m.value, self.expected) for m in mistakes):
+            return False
+        return all(not _cyclic_match(a.value, b.value) for i, a in enumerate(mistakes)
+                   for b in mistakes[i + 1:] if a.key != b.key)
+
+    def _check(self, answer):
+        if answer is ... or answer is None:
+            return Feedback("unanswered", UNANSWERED)
+        value = read_floats(answer)
+        if value is None or value.ndim != 2 or value.shape[1] != 4:
+            return Feedback("invalid", "Give the polygon as a list of homogeneous points "
+                            "`[[x, y, z, w], ...]`.", "unreadable")
+        if _cyclic_match(value, self.expected):
+            return Feedback("correct", "The clipped polygon is right (the starting vertex does "
+                            "not matter).")
+        for mistake in self._mistakes:
+            if _cyclic_match(value, mistake.value):
+                return Feedback("wrong", mistake.explanation, mistake.key)
+        if len(value) != len(self.expected):
+            return Feedback("wrong", f"Your polygon has {len(value)} vertices; the clipped one "
+                            f"has {len(self.expected)}. Apply the four rules to every edge "
+                            "(in-in: E; in-out: I; out-in: I, E; out-out: nothing).",
+                            "vertex count differs")
+        return Feedback("wrong", "The vertices are not right yet. Classify each vertex by the "
+                        "sign of the boundary function, and cut crossing edges at "
+                        "t = f(S) / (f(S) - f(E)), interpolating all four coordinates.",
+                        "vertices differ")
+
+    def statement(self):
+        return (r"A triangle has the clip coordinates (x, y, z, w) "
+                + ", ".join(rf"$v_{i} = {_point_tex(p)}$" for i, p in enumerate(self.triangle))
+                + rf". Clip it against the **{self.side}** plane of the view volume only, "
+                rf"whose inside is ${_F_NAMES[self._k]} \ge 0$, with Sutherland-Hodgman (edges "
+                r"$v_0 \to v_1$, $v_1 \to v_2$, $v_2 \to v_0$; in-in: E; in-out: I; out-in: I "
+                r"then E; out-out: nothing), in clip space, before any divide." "\n\n"
+                r"**Answer:** the output vertices in order, as homogeneous points "
+                r"`[[x, y, z, w], ...]` (any starting vertex), to 3 decimals or more." "\n\n"
+                + data_note("triangle", "side"))
+
+    def hints(self):
+        f = [self._f(p) for p in self.triangle]
+        return [r"Inside the plane means its boundary function is $\ge 0$: here "
+                rf"$f = {_F_NAMES[self._k]}$. Do not divide by w.",
+                "The values at the vertices: "
+                + ", ".join(rf"$f(v_{i}) = {v:g}$" for i, v in enumerate(f)) + ".",
+                r"A crossing edge $S \to E$ is cut at $t = f(S)/(f(S) - f(E))$: "
+                r"$I = S + t\,(E - S)$, all four coordinates."]
+
+    def worked(self):
+        f = [self._f(p) for p in self.triangle]
+        tri = [np.array(p, dtype=float) for p in self.triangle]
+        steps = [rf"Inside is $f = {_F_NAMES[self._k]} \ge 0$: "
+                 + ", ".join(rf"$f(v_{i}) = {v:g}$ ({'in' if v >= 0 else 'out'})"
+                             for i, v in enumerate(f)) + "."]
+        out = []
+        for i in range(3):
+            j = (i + 1) % 3
+            S, E, fs, fe = tri[i], tri[j], f[i], f[j]
+            edge = rf"$v_{i} \to v_{j}$"
+            if (fs >= 0) != (fe >= 0):
+                t = fs / (fs - fe)
+                cut = S + t * (E - S)
+                crossing = (rf"$t = {fs:g}/({fs:g} - ({fe:g})) = {latex_fraction(t)}$, "
+                            rf"$I = {latex_vector(cut)}$")
+            if fs >= 0 and fe >= 0:
+                out.append(E)
+                steps.append(rf"{edge}: in $\to$ in, output $E = {latex_vector(E)}$.")
+            elif fs >= 0:
+                out.append(cut)
+                steps.append(rf"{edge}: in $\to$ out, {crossing}: output $I$.")
+            elif fe >= 0:
+                out.extend([cut, E])
+                steps.append(rf"{edge}: out $\to$ in, {crossing}: output $I$, then $E$.")
+            else:
+                steps.append(rf"{edge}: out $\to$ out, nothing.")
+        steps.append(rf"The output, in order: {_sh_words(out)}.")
+        return Worked(steps, np.array(out))
