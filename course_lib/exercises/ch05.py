@@ -36,8 +36,6 @@ from ._ch05.sutherland_hodgman import SutherlandHodgmanArea, SutherlandHodgmanOn
 from ._ch05.zbuffer import ZBufferIds, ZBufferWrites
 from ._ch05.painter import PainterFailure, PaintersOrder
 from ._ch05.ray_casting import RayCastingCount
-from ._ch05.clip3d import (ClipSpaceExitPoint, ClipSpaceLiangBarskyPairs, ClipSpaceOutcode,
-                           ClipSpaceSutherlandHodgman)
 
 __all__ = [
     "EXERCISES",
@@ -56,10 +54,6 @@ __all__ = [
     "SutherlandHodgmanOneSide",
     "ZBufferIds",
     "ZBufferWrites",
-    "ClipSpaceOutcode",
-    "ClipSpaceLiangBarskyPairs",
-    "ClipSpaceExitPoint",
-    "ClipSpaceSutherlandHodgman",
 ]
 
 #: The exercises of chapter 5, in the order of the solutions notebook.
@@ -79,8 +73,13 @@ EXERCISES = (
     PaintersOrder,
     PainterFailure,
     RayCastingCount,
-    ClipSpaceOutcode,
-    ClipSpaceLiangBarskyPairs,
-    ClipSpaceExitPoint,
-    ClipSpaceSutherlandHodgman,
 )
+
+# Issue 21: clipping in homogeneous coordinates (clip space), before the divide
+from ._ch05.clip3d import (ClipSpaceExitPoint, ClipSpaceLiangBarskyPairs,  # noqa: E402
+                           ClipSpaceOutcode, ClipSpaceSutherlandHodgman)
+
+__all__ += ["ClipSpaceOutcode", "ClipSpaceLiangBarskyPairs", "ClipSpaceExitPoint",
+            "ClipSpaceSutherlandHodgman"]
+EXERCISES = EXERCISES + (ClipSpaceOutcode, ClipSpaceLiangBarskyPairs, ClipSpaceExitPoint,
+                         ClipSpaceSutherlandHodgman)
