@@ -1312,3 +1312,40 @@ def test_fact_ch05_bsp():
                 dists = [Point(eye).distance(ln.intersection(ray)) for ln in lines
                          if ln.intersects(ray)]
                 assert all(d1 <= d0 + 1e-9 for d0, d1 in zip(dists, dists[1:]))
+
+
+def test_fact_ch05_clip_space_before_the_divide():
+    """Checked with the six inequalities typed out and world points sampled along segments."""
+    from course_lib.viewing import look_at, perspective
+    assert answer_text("ch05-clip-space-why").startswith("A segment with an end behind the eye")
+    assert not truth("ch05-clip-space-w-negative") and truth("ch05-clip-space-t-world")
+    # no point with w < 0 is inside
+    p = RNG.uniform(-3, 3, (5000, 4))
+    p[:, 3] = -np.abs(p[:, 3]) - 1e-3
+    inside = (np.abs(p[:, :3]) <= p[:, 3:]).all(axis=1)
+    assert not inside.any()
+    m = perspective(np.radians(60), 1.0, 1.0, 20.0) @ look_at([0, 0, 5], [0, 0, -1], [0, 1, 0])
+    for _ in range(50):
+        a = np.array([*RNG.uniform(-0.5, 0.5, 2), RNG.uniform(-3, 1)])      # in front of the eye
+        b = np.array([*RNG.uniform(-4, 4, 2), RNG.uniform(6.5, 9)])         # behind it (z > 5)
+        ha, hb = m @ [*a, 1], m @ [*b, 1]
+        assert ha[3] > 0 > hb[3]
+        # the visible part by sampling the world segment densely (t is the world parameter)
+        ts = np.linspace(0, 1, 20001)
+        h = ha + ts[:, None] * (hb - ha)
+        seen = (np.abs(h[:, :3]) <= h[:, 3:]).all(axis=1)
+        # clip space: the same t as in the world (M is linear on homogeneous coordinates)
+        world = a + ts[:, None] * (b - a)
+        hw = np.column_stack([world, np.ones(len(ts))]) @ m.T
+        assert np.allclose(hw, h)
+        # the divide-first route: the NDC segment between the divided ends, sampled
+        na, nb = ha[:3] / ha[3], hb[:3] / hb[3]
+        ndc_line = na + ts[:, None] * (nb - na)
+        kept = (np.abs(ndc_line) <= 1).all(axis=1)
+        true_images = h[seen, :3] / h[seen, 3:]
+        # points the wrong route keeps that are the image of no visible point of the segment
+        far = [np.min(np.linalg.norm(true_images - q, axis=1)) for q in ndc_line[kept][::200]]
+        if max(far, default=0) > 0.05:
+            break
+    else:
+        raise AssertionError("dividing first never went wrong")

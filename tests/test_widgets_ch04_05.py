@@ -257,6 +257,76 @@ def test_clipping3d_widget_controls():
     assert ex.state.region == "frustum" and "frustum" in ex.info.value
 
 
+def sampled_interval(a, b, inside):
+    """[t_in, t_out] of the sampled world segment's points that pass `inside` (or None)."""
+    t = np.linspace(0, 1, 20001)
+    ok = inside(a + t[:, None] * (b - a))
+    return (t[ok][0], t[ok][-1]) if ok.any() else None
+
+
+@pytest.mark.parametrize("region", clipping3d.REGIONS)
+@pytest.mark.parametrize("step", range(7))
+def test_clipping3d_steps_keep_the_part_inside_the_planes_so_far(region, step):
+    """After k planes the kept part is the part of the segment that satisfies the first k of the
+    typed inequalities -w <= x, y, z <= w (w = 1 for the box), sampled."""
+    state = clipping3d.State(region=region, turn_deg=35, tilt_deg=20, lift=0.3, step=step)
+    s = clipping3d.scene(state)
+    m = np.eye(4) if region == "box" else clipping3d._CAMERA
+    signs = [(0, 1), (0, -1), (1, 1), (1, -1), (2, 1), (2, -1)]   # w + x >= 0, w - x >= 0, ...
+
+    def inside(points):
+        h = np.column_stack([points, np.ones(len(points))]) @ m.T
+        ok = np.ones(len(points), bool)
+        for axis, sign in signs[:step]:
+            ok &= h[:, 3] + sign * h[:, axis] >= 0
+        return ok
+
+    a, b = s["segment"]
+    expected = sampled_interval(a, b, inside)
+    if expected is None:
+        assert s["clipped_segment"] is None
+    else:
+        assert s["t_in"] == pytest.approx(expected[0], abs=1e-4)
+        assert s["t_out"] == pytest.approx(expected[1], abs=1e-4)
+    for point in s["polygon"]:                # the triangle clipped by the same planes
+        h = m @ [*point, 1]
+        assert all(h[3] + sign * h[axis] >= -1e-9 for axis, sign in signs[:step])
+    assert (s["face"] is None) == (step == 0)
+
+
+def test_clipping3d_box_rows_are_the_typed_pairs():
+    s = clipping3d.scene(clipping3d.State(region="box", turn_deg=-50, lift=0.4))
+    (x0, y0, z0), (x1, y1, z1) = s["segment"]
+    typed = [(x0 - x1, 1 + x0), (x1 - x0, 1 - x0), (y0 - y1, 1 + y0), (y1 - y0, 1 - y0),
+             (z0 - z1, 1 + z0), (z1 - z0, 1 - z0)]
+    assert np.allclose([(r["p"], r["q"]) for r in s["rows"]], typed)
+
+
+def test_clipping3d_every_control_changes_the_picture():
+    ex = clipping3d.ClippingExplorer3D()
+    assert ex.step.value == 6 and ex.step.max == 6
+
+    def picture():
+        return (np.concatenate([np.ravel(np.asarray(line.get_data_3d(), float))
+                                for line in (ex.kept, ex.face, ex.enter_pts, ex.leave_pts)]),
+                ex.info.value)
+
+    for control, value in ((ex.step, 2), (ex.step, 0), (ex.step, 4), (ex.turn, -60.0),
+                           (ex.tilt, 25.0), (ex.lift, 0.5), (ex.region, "frustum")):
+        before = picture()
+        control.value = value
+        after = picture()
+        assert after[1] != before[1]
+        assert before[0].shape != after[0].shape or not np.allclose(before[0], after[0],
+                                                                   equal_nan=True)
+    ex.step.value = 0
+    assert "no plane yet" in ex.info.value and len(ex.face.get_data_3d()[0]) == 0
+    ex.step.value = 5
+    assert "Plane 5 (near)" in ex.info.value
+    started = clipping3d.ClippingExplorer3D(clipping3d.State(region="frustum", step=3))
+    assert started.step.value == 3 and "Plane 3 (bottom)" in started.info.value
+
+
 # --- z-buffer trace and hidden-surface explorer ---------------------------------------------
 
 from course_lib.widgets import hidden_surface, zbuffer  # noqa: E402

@@ -86,3 +86,11 @@ from ._ch05.bsp import BSPBuildTree, BSPPaintOrder  # noqa: E402
 
 __all__ += ["BSPBuildTree", "BSPPaintOrder"]
 EXERCISES = EXERCISES + (BSPBuildTree, BSPPaintOrder)
+# Issue 21: clipping in homogeneous coordinates (clip space), before the divide
+from ._ch05.clip3d import (ClipSpaceExitPoint, ClipSpaceLiangBarskyPairs,  # noqa: E402
+                           ClipSpaceOutcode, ClipSpaceSutherlandHodgman)
+
+__all__ += ["ClipSpaceOutcode", "ClipSpaceLiangBarskyPairs", "ClipSpaceExitPoint",
+            "ClipSpaceSutherlandHodgman"]
+EXERCISES = EXERCISES + (ClipSpaceOutcode, ClipSpaceLiangBarskyPairs, ClipSpaceExitPoint,
+                         ClipSpaceSutherlandHodgman)

@@ -191,4 +191,32 @@ QUESTIONS = [
         "cut by the lines of nodes above it.",
         "It is true: the root's segment is the partition itself and is stored whole; only "
         "segments placed below a partition can be cut by its line."),
+    _mc(5, "ch05-clip-space-why",
+        "Why is clipping done in clip space, against $-w \\le x, y, z \\le w$, before the "
+        "perspective divide, rather than against the cube $[-1, 1]^3$ after it?",
+        ("It only saves time: clipping after the divide gives the same picture", "Not when a "
+         "segment has one end behind the eye ($w < 0$): there the two routes give different "
+         "segments, and only clipping before the divide is right."),
+        ("A segment with an end behind the eye ($w < 0$) passes through $w = 0$; dividing first "
+         "sends that end through infinity to the mirrored side, and the divided segment is the "
+         "image of the wrong part of the line", "Right: before the divide the six conditions "
+         "are linear in $(x, y, z, w)$ and remove everything with $w \\le 0$ exactly."),
+        ("The perspective projection does not map straight lines to straight lines", "It does, "
+         "for points in front of the eye; the trouble is only the points behind it."),
+        ("The NDC cube is not convex, so Liang-Barsky cannot be used after the divide", "The "
+         "cube is convex; Liang-Barsky works there for segments entirely in front of the eye."),
+        correct=1),
+    _tf(5, "ch05-clip-space-w-negative",
+        "A homogeneous point with $w < 0$ can satisfy all of $-w \\le x, y, z \\le w$.", False,
+        "It cannot: $-w \\le x \\le w$ needs $w \\ge |x| \\ge 0$, so every point behind the "
+        "eye gets a non-zero outcode and is clipped away without any division.",
+        "Right: $-w \\le x \\le w$ forces $w \\ge |x| \\ge 0$."),
+    _tf(5, "ch05-clip-space-t-world",
+        "The parameter $t$ at which Liang-Barsky clips a segment in clip space is also the "
+        "parameter of the clipped point on the segment in world coordinates.", True,
+        "The projection and view matrices are linear maps of homogeneous coordinates, so "
+        "$M(P_0 + t(P_1 - P_0)) = MP_0 + t(MP_1 - MP_0)$: the same $t$ (after the divide, "
+        "in NDC, it is not, since the divide is not linear).",
+        "It is: $M$ is linear on homogeneous coordinates, so the clip-space segment is the "
+        "image of the world segment with the same parameter (only the NDC parameter differs)."),
 ]
