@@ -3,7 +3,9 @@ r"""Chapter 3 exercises: transformations (2D and 3D) and quaternions, exam style
 Each class is one kind of exam question. Its ``seed`` draws numbers that are easy to work with by
 hand: angles that are multiples of 15 or 30 degrees, small whole translations and points, axes
 with whole lengths such as :math:`(1, 2, 2)` (length 3) or :math:`(0, 3, 4)` (length 5), and
-quaternions with rational components. The question's numbers are attributes of the exercise
+quaternions with rational components. The newer topics: a normal under a shear (the inverse
+transpose), coordinates in another frame, scaling about a point, homogeneous matrices whose
+:math:`w` is not 1, and mirroring about a plane. The question's numbers are attributes of the exercise
 object (``ex.theta``, ``ex.d``, ...), so that a worked solution can read them for any seed.
 
 The expected answers are computed with :mod:`course_lib.transforms` and
@@ -27,20 +29,28 @@ from ._ch03.unit_quaternions import (ComposeRotationsWithQuaternions, Quaternion
                                      QuaternionProduct, RotatePointWithQuaternion, SlerpMidpoint)
 from ._ch03.rotation_matrices import AxisAngleOfMatrix, MatrixToQuaternion, QuaternionToMatrix
 
+from ._ch03.frames import (FrameCoordinates, HomogeneousRotationAngle, MirrorAboutPlane,
+                           NormalUnderShear, ScaleAboutPoint)
+
 __all__ = [
     "EXERCISES",
     "AxisAngleOfMatrix",
     "ComposeMatrix2D",
     "ComposeRotationsWithQuaternions",
+    "FrameCoordinates",
+    "HomogeneousRotationAngle",
     "InverseOfComposite",
     "MatrixToQuaternion",
     "MirrorAboutLine",
+    "MirrorAboutPlane",
+    "NormalUnderShear",
     "QuaternionFromAxisAngle",
     "QuaternionProduct",
     "QuaternionToMatrix",
     "RotateAboutPoint",
     "RotatePointWithQuaternion",
     "RotationAboutArbitraryAxis",
+    "ScaleAboutPoint",
     "ShearImage",
     "ShearInverse",
     "ShearedBoxVolume",
@@ -65,13 +75,9 @@ EXERCISES = (
     AxisAngleOfMatrix,
     ComposeRotationsWithQuaternions,
     SlerpMidpoint,
+    NormalUnderShear,
+    FrameCoordinates,
+    ScaleAboutPoint,
+    HomogeneousRotationAngle,
+    MirrorAboutPlane,
 )
-
-# Issue 21: normals, change of frame, scaling about a point, w != 1, mirroring about a plane
-from ._ch03.frames import (FrameCoordinates, HomogeneousRotationAngle, MirrorAboutPlane,
-                           NormalUnderShear, ScaleAboutPoint)
-
-__all__ += ["FrameCoordinates", "HomogeneousRotationAngle", "MirrorAboutPlane",
-            "NormalUnderShear", "ScaleAboutPoint"]
-EXERCISES += (NormalUnderShear, FrameCoordinates, ScaleAboutPoint, HomogeneousRotationAngle,
-              MirrorAboutPlane)

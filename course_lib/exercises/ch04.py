@@ -4,7 +4,9 @@ Each class is one kind of exam question about the road from world coordinates to
 the textbook's simple projections (:math:`P_{PER}`, :math:`P_{OBLI}`, cavalier and cabinet), the
 eye coordinate system and the WCS -> ECS matrix, the perspective and orthographic ECS -> CSS
 matrices with the homogeneous divide, the viewport, and what a perspective projection keeps
-(cross ratios, vanishing points). The ``seed`` draws numbers that work out by hand: camera frames
+(cross ratios, vanishing points); and the taxonomy of projections (classify a matrix,
+axonometric foreshortening, a cabinet matrix, a camera's vanishing points and how many a box
+has, projecting onto an arbitrary plane, from :mod:`course_lib.projections`). The ``seed`` draws numbers that work out by hand: camera frames
 whose axes have rational components (rows such as :math:`\tfrac13(1, 2, 2)`), fields of view of
 60, 90 or 120 degrees, near and far planes that give short decimals, small whole points.
 

@@ -5,7 +5,11 @@ trivial accept/reject test, the clipped segment and the number of intersections 
 Liang-Barsky's :math:`p_k, q_k, t_k` table, its :math:`[t_{in}, t_{out}]` interval and the clipped
 segment in 3D, Sutherland-Hodgman against one side and against a whole rectangle, the z-buffer on
 a 4 x 4 grid, the painter's algorithm (its order, and where it goes wrong) and the cost of ray
-casting with and without bounding volumes. The ``seed`` draws small whole numbers, so that every
+casting with and without bounding volumes; clipping in clip space before the divide (6-bit
+outcodes from :math:`-w \le x, y, z \le w`, Liang-Barsky's six pairs, the exit point, a
+Sutherland-Hodgman step), hierarchical occlusion culling (a z-pyramid level, the hierarchical
+z-buffer test, an occlusion query, an occlusion map's opacity) and BSP trees of segments built
+and traversed by hand. The ``seed`` draws small whole numbers, so that every
 intersection is a short fraction and every grid can be filled in by hand.
 
 The clipping answers come from :mod:`course_lib.clipping`. The z-buffer, the painter's algorithm
@@ -37,15 +41,30 @@ from ._ch05.zbuffer import ZBufferIds, ZBufferWrites
 from ._ch05.painter import PainterFailure, PaintersOrder
 from ._ch05.ray_casting import RayCastingCount
 
+from ._ch05.clip3d import (ClipSpaceExitPoint, ClipSpaceLiangBarskyPairs, ClipSpaceOutcode,
+                           ClipSpaceSutherlandHodgman)
+from ._ch05.hierarchical import (HOMOpacity, HZBRejection, OcclusionQueryCount,
+                                 ZPyramidNextLevel)
+from ._ch05.bsp import BSPBuildTree, BSPPaintOrder
+
 __all__ = [
     "EXERCISES",
+    "BSPBuildTree",
+    "BSPPaintOrder",
     "BackFaceCulling",
+    "ClipSpaceExitPoint",
+    "ClipSpaceLiangBarskyPairs",
+    "ClipSpaceOutcode",
+    "ClipSpaceSutherlandHodgman",
     "CohenSutherlandClip",
     "CohenSutherlandDecision",
     "CohenSutherlandIntersections",
+    "HOMOpacity",
+    "HZBRejection",
     "LiangBarskyClip3D",
     "LiangBarskyInterval",
     "LiangBarskyTable",
+    "OcclusionQueryCount",
     "Outcodes",
     "PainterFailure",
     "PaintersOrder",
@@ -54,6 +73,7 @@ __all__ = [
     "SutherlandHodgmanOneSide",
     "ZBufferIds",
     "ZBufferWrites",
+    "ZPyramidNextLevel",
 ]
 
 #: The exercises of chapter 5, in the order of the solutions notebook.
@@ -73,24 +93,14 @@ EXERCISES = (
     PaintersOrder,
     PainterFailure,
     RayCastingCount,
+    ClipSpaceOutcode,
+    ClipSpaceLiangBarskyPairs,
+    ClipSpaceExitPoint,
+    ClipSpaceSutherlandHodgman,
+    ZPyramidNextLevel,
+    HZBRejection,
+    OcclusionQueryCount,
+    HOMOpacity,
+    BSPBuildTree,
+    BSPPaintOrder,
 )
-
-# Hierarchical occlusion culling: the z-pyramid, the HZB test, occlusion queries, occlusion maps
-from ._ch05.hierarchical import (HOMOpacity, HZBRejection, OcclusionQueryCount,  # noqa: E402
-                                 ZPyramidNextLevel)
-
-__all__ += ["HOMOpacity", "HZBRejection", "OcclusionQueryCount", "ZPyramidNextLevel"]
-EXERCISES += (ZPyramidNextLevel, HZBRejection, OcclusionQueryCount, HOMOpacity)
-# Issue 21: BSP trees by hand (a plan of segments)
-from ._ch05.bsp import BSPBuildTree, BSPPaintOrder  # noqa: E402
-
-__all__ += ["BSPBuildTree", "BSPPaintOrder"]
-EXERCISES = EXERCISES + (BSPBuildTree, BSPPaintOrder)
-# Issue 21: clipping in homogeneous coordinates (clip space), before the divide
-from ._ch05.clip3d import (ClipSpaceExitPoint, ClipSpaceLiangBarskyPairs,  # noqa: E402
-                           ClipSpaceOutcode, ClipSpaceSutherlandHodgman)
-
-__all__ += ["ClipSpaceOutcode", "ClipSpaceLiangBarskyPairs", "ClipSpaceExitPoint",
-            "ClipSpaceSutherlandHodgman"]
-EXERCISES = EXERCISES + (ClipSpaceOutcode, ClipSpaceLiangBarskyPairs, ClipSpaceExitPoint,
-                         ClipSpaceSutherlandHodgman)
