@@ -20,7 +20,7 @@ def operations(quick=False):
     r, r2 = Rotation.from_quat(q, scalar_first=True), Rotation.from_quat(q2, scalar_first=True)
     slerp = Slerp([0, 1], Rotation.from_quat(q[:2], scalar_first=True))
     sci = "scipy Rotation"
-    return [
+    rows = [
         operation_row("quaternion -> matrix", n, lambda: quaternions.to_matrix(q),
                       lambda: Rotation.from_quat(q, scalar_first=True).as_matrix(), sci, repeat),
         operation_row("matrix -> quaternion", n, lambda: quaternions.from_matrix(m),
@@ -32,6 +32,15 @@ def operations(quick=False):
         operation_row("slerp (one pair, many t)", n, lambda: quaternions.slerp(q[0], q[1], t),
                       lambda: slerp(t).as_quat(scalar_first=True), "scipy Slerp", repeat),
     ]
+    for topic in _topics():
+        rows += topic.operations(quick)
+    return rows
+
+
+def _topics():
+    from benchmarks import ch03_frames
+
+    return (ch03_frames,)
 
 
 def widgets(quick=False):
@@ -61,4 +70,6 @@ def widgets(quick=False):
     ex = composer.ComposerExplorer()
     measure("transformation composer (rotate slider)", ex,
             lambda i: setattr(ex.rows[1].sliders[0], "value", -180 + (7 * i) % 360))
+    for topic in _topics():
+        rows += topic.widgets(quick)
     return rows

@@ -29,9 +29,18 @@ def operations(quick=False):
         target.Reset()
         transform.TransformPoints(source, target)
 
-    return [operation_row("project points (apply + divide)", n,
+    rows = [operation_row("project points (apply + divide)", n,
                           lambda: transforms.apply(m, points), vtk_reference,
                           "VTK vtkPerspectiveTransform", repeat)]
+    for topic in _topics():
+        rows += topic.operations(quick)
+    return rows
+
+
+def _topics():
+    from benchmarks import ch04_taxonomy
+
+    return (ch04_taxonomy,)
 
 
 def widgets(quick=False):
@@ -49,4 +58,7 @@ def widgets(quick=False):
                      lambda i: setattr(ex.controls["eye_x"], "value", 4.5 - 0.1 * (i % 40)),
                      ex.fig.canvas.draw, repeat)
     plt.close(ex.fig)
-    return [row]
+    rows = [row]
+    for topic in _topics():
+        rows += topic.widgets(quick)
+    return rows

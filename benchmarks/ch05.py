@@ -32,7 +32,7 @@ def operations(quick=False):
     polys = _polygons(rng, n_poly)
     shapes = shapely.polygons(polys)
     ref = "shapely clip_by_rect"
-    return [
+    rows = [
         operation_row("clip 2D segments: Liang-Barsky, vectorized", n,
                       lambda: clipping.liang_barsky_many(p0, p1, lo, hi),
                       lambda: shapely.clip_by_rect(lines, 0.0, 0.0, 1.0, 1.0), ref, repeat),
@@ -43,6 +43,15 @@ def operations(quick=False):
                       lambda: [clipping.sutherland_hodgman(p, lo, hi) for p in polys],
                       lambda: shapely.clip_by_rect(shapes, 0.0, 0.0, 1.0, 1.0), ref, repeat),
     ]
+    for topic in _topics():
+        rows += topic.operations(quick)
+    return rows
+
+
+def _topics():
+    from benchmarks import ch05_clip3d, ch05_hierarchical, ch05_bsp
+
+    return (ch05_clip3d, ch05_hierarchical, ch05_bsp,)
 
 
 def widgets(quick=False):
@@ -91,4 +100,6 @@ def widgets(quick=False):
         rows.append(widget_row(name, lambda i, ex=explorer, move=move: move(ex, i),
                                explorer.fig.canvas.draw, repeat))
         plt.close(explorer.fig)
+    for topic in _topics():
+        rows += topic.widgets(quick)
     return rows
