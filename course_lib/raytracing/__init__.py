@@ -192,3 +192,12 @@ __all__ = [
     "schlick",
     "trace_tree",
 ]
+
+# Issue 22: quadrics and implicit surfaces, spatial subdivision (grid, octree, kd-tree),
+# distributed ray tracing (each module declares its __all__)
+from . import distributed, quadrics, spatial  # noqa: E402
+from .quadrics import *  # noqa: E402,F401,F403
+from .spatial import *  # noqa: E402,F401,F403
+from .distributed import *  # noqa: E402,F401,F403
+
+__all__ = sorted(__all__ + quadrics.__all__ + spatial.__all__ + distributed.__all__)

@@ -200,3 +200,12 @@ __all__ = [
     "view_rotation",
     "volume_render",
 ]
+
+# Issue 22: splatting, slicing and classification order; flow topology and gridded integration;
+# unsteady flow lines and line integral convolution (each module declares its __all__)
+from . import topology, unsteady, volume_methods  # noqa: E402
+from .volume_methods import *  # noqa: E402,F401,F403
+from .topology import *  # noqa: E402,F401,F403
+from .unsteady import *  # noqa: E402,F401,F403
+
+__all__ = sorted(__all__ + volume_methods.__all__ + topology.__all__ + unsteady.__all__)

@@ -1,0 +1,2 @@
+"""distributed (being written)."""
+__all__ = []

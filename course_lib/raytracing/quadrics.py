@@ -1,0 +1,2 @@
+"""quadrics (being written)."""
+__all__ = []

@@ -1,0 +1,2 @@
+"""spatial (being written)."""
+__all__ = []

@@ -1,0 +1,2 @@
+"""unsteady (being written)."""
+__all__ = []

@@ -1,0 +1,2 @@
+"""volume_methods (being written)."""
+__all__ = []
