@@ -65,3 +65,9 @@ EXERCISES = (
     RayTreeCount,
     BVHSavings,
 )
+
+# Distributed ray tracing (issue 22)
+from ._ch15.distributed import DistributedDomainChoice, SoftShadowShare  # noqa: E402
+
+__all__ += ["DistributedDomainChoice", "SoftShadowShare"]
+EXERCISES = EXERCISES + (DistributedDomainChoice, SoftShadowShare)
