@@ -1349,3 +1349,23 @@ def test_fact_ch05_clip_space_before_the_divide():
             break
     else:
         raise AssertionError("dividing first never went wrong")
+
+
+def test_fact_ch15_distributed():
+    from course_lib.raytracing import Camera, lens_rays
+    rng = np.random.default_rng(1522)          # its own generator: the shared RNG's draws stay put
+    # noise of a mean of N samples: quadrupling N halves the standard deviation
+    assert answer_text("ch15-distributed-noise") == "By a factor of 2"
+    stds = [rng.random((4000, n)).mean(axis=1).std() for n in (16, 64)]
+    assert stds[0] / stds[1] == pytest.approx(2.0, rel=0.1)
+    # depth of field: the rays of a pixel start all over the aperture and meet on the focal plane
+    assert answer_text("ch15-distributed-dof").startswith("the lens aperture")
+    cam = Camera([0, 0, 0], [0, 0, -1], [0, 1, 0], math.radians(50), 3, 3)
+    rays = lens_rays(cam, samples=64, aperture=0.25, focal_distance=3.0, antialias=False)
+    o, d = rays.origins[1, 1], rays.directions[1, 1]
+    assert np.ptp(o[:, 0]) > 0.3                                   # spread over the lens
+    on_focal_plane = o + ((-3.0 - o[:, 2]) / d[:, 2])[:, None] * d
+    assert np.allclose(on_focal_plane, [0.0, 0.0, -3.0])           # one point in focus
+    # Cook's trick: N paths per pixel whatever the number of effects
+    assert not truth("ch15-distributed-cost")
+    assert rays.directions.shape == (3, 3, 64, 3)

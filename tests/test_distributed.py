@@ -201,7 +201,7 @@ def test_motion_blur_is_the_time_average_of_a_moving_edge():
 
 
 def test_antialiasing_gives_the_covered_area_of_each_pixel():
-    shapely = pytest.importorskip("shapely")
+    pytest.importorskip("shapely")
     from shapely.geometry import Polygon, box
     # camera at z = 5 looking down -z, 90 degrees: (X, Y, 0) projects to canonical (X/5, Y/5)
     w = 8

@@ -87,4 +87,36 @@ QUESTIONS = [
          "from the nearest hit of its primary ray and the rays spawned there."),
         ("One for the whole image", "Each pixel needs its own ray."),
         correct=2),
+    # Distributed ray tracing (issue 22)
+    _mc(15, "ch15-distributed-noise",
+        "A distributed ray tracer averages $N$ independent random samples per pixel. By what "
+        "factor does the noise (the standard deviation of a pixel) fall when $N$ is "
+        "quadrupled?",
+        ("By a factor of 4", "That would be an error falling like $1/N$; the standard deviation of a mean of "
+         "$N$ independent samples falls like $1/\\sqrt{N}$."),
+        ("By a factor of 2", "The standard deviation of the mean is $\\sigma/\\sqrt{N}$: four times the "
+         "samples halve the noise (stratified samples do somewhat better)."),
+        ("By a factor of 16", "Far too optimistic: no Monte Carlo estimate improves like $1/N^2$."),
+        ("It does not fall: random samples always stay noisy", "The noise does fall, only "
+         "slowly: like $1/\\sqrt{N}$."),
+        correct=1),
+    _mc(15, "ch15-distributed-dof",
+        "In distributed ray tracing, depth of field comes from spreading the camera rays "
+        "over...",
+        ("the light source's area", "That gives soft shadows (a penumbra), not focus blur."),
+        ("the lens aperture, all rays of a pixel meeting again on the plane in focus",
+         "Points on the focal plane are hit by all of a pixel's rays (sharp); nearer or "
+         "further points are spread over a circle of confusion."),
+        ("the time the shutter is open", "That gives motion blur of moving objects only."),
+        ("the pixel's area", "That is antialiasing: a blur of at most one pixel, the same at "
+         "every depth."),
+        correct=1),
+    _tf(15, "ch15-distributed-cost",
+        "Rendering soft shadows, glossy reflection, depth of field and motion blur together "
+        "with 16 samples for each effect needs $16^4 = 65536$ rays per pixel.", False,
+        "Cook's trick: each of the 16 paths of a pixel gets its own lens point, time, light "
+        "point and reflection direction (each dimension stratified and shuffled), so 16 paths "
+        "estimate all the integrals at once.",
+        "Right: the dimensions are sampled together, one sample of each per path, not as a "
+        "product grid."),
 ]
