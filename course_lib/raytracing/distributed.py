@@ -57,6 +57,14 @@ def _drt_nonnegative(value, name, what):
     return x
 
 
+def _drt_exponent(value, name, what):
+    """A Phong exponent: >= 0, or +inf (a perfect mirror)."""
+    if isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(
+            value, (bool, np.bool_)) and value == np.inf:
+        return np.inf
+    return _drt_nonnegative(value, name, what)
+
+
 def _drt_uv(value, name):
     uv = np.asarray(value, dtype=float)
     if uv.ndim < 1 or uv.shape[-1] != 2:
@@ -199,7 +207,7 @@ def sample_lobe(axis, exponent, uv):
     >>> sample_lobe([0, 0, 1], 10.0, [[0.0, 0.3]]).round(12)       # u = 0: along the axis
     array([[0., 0., 1.]])
     """
-    n = _drt_nonnegative(exponent, "exponent", "a Phong exponent; inf for a perfect mirror")
+    n = _drt_exponent(exponent, "exponent", "a Phong exponent; inf for a perfect mirror")
     w = np.asarray(axis, dtype=float)
     if w.ndim < 1 or w.shape[-1] != 3:
         raise ValueError(f"axis must have shape (..., 3), got shape {w.shape}")
@@ -533,8 +541,8 @@ def _drt_options(scene, light_radius, light_normal, gloss, shutter, motion, max_
                  epsilon):
     drt = _DrtScene(scene, motion)
     r, normal = _drt_light_options(light_radius, light_normal)
-    g = None if gloss is None else _drt_nonnegative(gloss, "gloss", "a Phong exponent; None "
-                                                    "for a perfect mirror")
+    g = None if gloss is None else _drt_exponent(gloss, "gloss", "a Phong exponent; None or "
+                                                 "inf for a perfect mirror")
     if g is not None and np.isinf(g):
         g = None
     s = _drt_nonnegative(shutter, "shutter", "how long the shutter stays open")
