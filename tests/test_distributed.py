@@ -309,3 +309,11 @@ def test_helper_errors():
         trace_distributed(penumbra_scene(), [[0, 0, 5]], [[0, 0, -1]], times=[0, 1])
     with pytest.raises(ValueError, match="shape"):
         trace_distributed(penumbra_scene(), [[0, 0, 5]], [[0, 0, -1], [0, 0, 1]])
+
+
+def test_infinite_gloss_is_a_perfect_mirror():
+    scene = example_scene("spheres", 8, 6)
+    assert np.array_equal(render_distributed(scene, samples=2, gloss=np.inf, seed=4),
+                          render_distributed(scene, samples=2, gloss=None, seed=4))
+    d = sample_lobe([0.0, 0.6, 0.8], np.inf, stratified(16, seed=1))
+    assert np.allclose(d, [0.0, 0.6, 0.8])
