@@ -65,3 +65,9 @@ EXERCISES = (
     RayTreeCount,
     BVHSavings,
 )
+
+# Quadrics and implicit surfaces: a finite open cylinder, two disks
+from ._ch15.quadrics import RayCylinderHit, RayDiskHit  # noqa: E402
+
+__all__ += ["RayCylinderHit", "RayDiskHit"]
+EXERCISES += (RayCylinderHit, RayDiskHit)
