@@ -41,8 +41,8 @@ def cylinder(ex):
     else:
         mistakes["height test"] = np.r_[roots[0], n]
         mistakes["inward normal"] = np.r_[t, -n]
-    for key, coeffs in (("a from the origin", [o[0]**2 + o[1]**2, 2 * (o[0] * d[0] + o[1] * d[1]),
-                                               o[0]**2 + o[1]**2 - r * r]),
+    for key, coeffs in (("a = d.d", [d @ d, 2 * (o[0] * d[0] + o[1] * d[1]),
+                                     o[0]**2 + o[1]**2 - r * r]),
                         ("a = 1", [1.0, 2 * (o[0] * d[0] + o[1] * d[1]),
                                    o[0]**2 + o[1]**2 - r * r]),
                         ("sphere equation", [d @ d, 2 * o @ d, o @ o - r * r])):

@@ -62,7 +62,8 @@ class RayCylinderHit(_Parts):
               r"whose point has $0 \le z \le h$; the normal is $(x, y, 0)/r$.")
 
     def draw(self, rng):
-        self.kind = "open end" if rng.random() < 0.45 else "outside"
+        if not hasattr(self, "kind"):            # chosen once per seed: redraws keep it
+            self.kind = "open end" if rng.random() < 0.45 else "outside"
         nxy = pick(rng, tuple(_CYLINDER_NORMALS))
         self.radius = float(pick(rng, _CYLINDER_NORMALS[nxy]))
         nxy = np.array(nxy)[rng.permutation(2)] * rng.choice([-1.0, 1.0], 2)
@@ -123,9 +124,9 @@ class RayCylinderHit(_Parts):
                                    r"infinite cylinder, above the finite one. Test the height "
                                    r"and, if it fails, try the other root.", "height test"))
         for key, (aa, bb, cc), text in (
-                ("a from the origin", (o[0] ** 2 + o[1] ** 2, b, c),
-                 r"You used $o_x^2 + o_y^2$ for $a$; $a$ is the coefficient of $t^2$, made of "
-                 r"the direction only: $a = d_x^2 + d_y^2$."),
+                ("a = d.d", (self.d @ self.d, b, c),
+                 r"You took $a = d \cdot d$, with $d_z^2$ in it, as for a sphere. The "
+                 r"cylinder's equation has no $z$: $a = d_x^2 + d_y^2$."),
                 ("a = 1", (1.0, b, c), r"You took $a = 1$, as if $d$ were a unit vector in the "
                  r"xy plane; it is not: $a = d_x^2 + d_y^2$."),
                 ("sphere equation", (self.d @ self.d, 2 * o @ self.d, o @ o - self.radius ** 2),
@@ -230,7 +231,8 @@ class RayDiskHit(DrawnExercise):
               r"smallest such $t$.")
 
     def draw(self, rng):
-        self.kind = "behind" if rng.random() < 0.4 else "outside"
+        if not hasattr(self, "kind"):            # chosen once per seed: redraws keep it
+            self.kind = "behind" if rng.random() < 0.4 else "outside"
         axes = rng.permutation(3)
         n = np.zeros((2, 3))
         n[0, axes[0]] = rng.choice([-1.0, 1.0])
@@ -273,7 +275,7 @@ class RayDiskHit(DrawnExercise):
         return bool(np.isinf(ts[0]) and np.isclose(ts[1], self.t_b))
 
     def mistakes(self):
-        d, n, o, c = self.d, self.normals, self.o, self.centers
+        n, o, c = self.normals, self.o, self.centers
         found = [Mistake(-self.t_b, r"The sign of the plane distance is wrong: with "
                          r"$(o - c) \cdot n$ in the numerator $t$ changes sign. It is "
                          r"$t = \frac{(c - o) \cdot n}{d \cdot n}$.", "sign of the distance"),
