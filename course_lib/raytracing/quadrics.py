@@ -215,15 +215,15 @@ def quadric_value(Q, points):
     return np.einsum("...i,ij,...j->...", h, q, h)
 
 
-def _quadric_coefficients(o, d, q):
-    """a, b, c of f(o + t d) for (p, 3) rays (b the full linear coefficient).
+def _quadric_coefficients(oc, dc, q):
+    """a, b, c of f(o + t d) for rays given as coordinate columns oc, dc (3, p) (b the full
+    linear coefficient).
 
-    Written entry by entry over coordinate columns, skipping the zeros of Q (most quadrics are
-    nearly diagonal): much faster than (p, 4) @ (4, 4) products for many rays."""
-    oc, dc = np.ascontiguousarray(o.T), np.ascontiguousarray(d.T)
-    a = np.zeros(len(o))
-    b = np.zeros(len(o))
-    c = np.full(len(o), q[3, 3])
+    Written entry by entry over the columns, skipping the zeros of Q (most quadrics are nearly
+    diagonal): much faster than (p, 4) @ (4, 4) products for many rays."""
+    a = np.zeros(oc.shape[1])
+    b = np.zeros(oc.shape[1])
+    c = np.full(oc.shape[1], q[3, 3])
     for i in range(3):
         for j in range(i, 3):
             k = q[i, j] * (1.0 if i == j else 2.0)
@@ -261,7 +261,7 @@ def ray_quadratic(origins, directions, Q):
     [1.0, -6.0, 8.0]
     """
     o, d, lead = _rays(origins, directions)
-    a, b, c = _quadric_coefficients(o, d, _as_quadric(Q))
+    a, b, c = _quadric_coefficients(o.T, d.T, _as_quadric(Q))
     return a.reshape(lead), b.reshape(lead), c.reshape(lead)
 
 
@@ -290,27 +290,35 @@ def _quadric_clip(clip):
     return lo, hi
 
 
-def _select_quadric_root(t1, t2, o, d, t_min, clip):
+def _select_quadric_root(t1, t2, oc, dc, t_min, clip):
     """The first of the two roots >= t_min whose point lies inside the clip range."""
     def ok(t):
         good = np.isfinite(t) & (t >= t_min)
         if clip is not None:
             with np.errstate(invalid="ignore"):
-                z = o[:, 2] + np.where(good, t, 0.0) * d[:, 2]
+                z = oc[2] + np.where(good, t, 0.0) * dc[2]
             good &= (z >= clip[0]) & (z <= clip[1])
         return good
     return np.where(ok(t1), t1, np.where(ok(t2), t2, np.inf))
 
 
-def _quadric_normals(q, p, d, face_ray):
-    g = p @ q[:3, :3] + q[3, :3]                 # (Q x~)_xyz, Q symmetric
-    length = np.sqrt(_dot(g, g))
-    flat = length == 0                       # a cone's apex: no tangent plane
-    n = np.where(flat[:, None], -d / np.sqrt(_dot(d, d))[:, None],
-                 g / np.where(flat, 1.0, length)[:, None])
+def _quadric_normals(q, pc, dc, face_ray):
+    """Unit normals (3, p) from the gradient (Q x~)_xyz at points given as columns pc (3, p);
+    -d where the gradient vanishes (a cone's apex); turned against d if `face_ray`."""
+    g = np.empty_like(pc)
+    for i in range(3):
+        g[i] = q[i, 3]
+        for j in range(3):
+            if q[i, j] != 0:
+                g[i] += q[i, j] * pc[j]
+    length = np.sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2])
+    flat = ~(length > 0)                     # a cone's apex (or a miss): no tangent plane
+    g /= np.where(flat, 1.0, length)
+    if flat.any():
+        g[:, flat] = -dc[:, flat] / np.sqrt((dc[:, flat] ** 2).sum(axis=0))
     if face_ray:
-        n = np.where((_dot(n, d) > 0)[:, None], -n, n)
-    return n
+        g *= np.where(g[0] * dc[0] + g[1] * dc[1] + g[2] * dc[2] > 0, -1.0, 1.0)
+    return g
 
 
 def intersect_quadric(origins, directions, Q, t_min=0.0, clip=None, face_ray=False):
@@ -363,16 +371,16 @@ def intersect_quadric(origins, directions, Q, t_min=0.0, clip=None, face_ray=Fal
     q = _as_quadric(Q)
     t_min = _t_min(t_min)
     clip = _quadric_clip(clip)
-    a, b, c = _quadric_coefficients(o, d, q)
-    scale = np.abs(q).max() * _dot(d, d)
-    t = _select_quadric_root(*_quadratic_roots(a, b, c, scale), o, d, t_min, clip)
+    oc, dc = np.ascontiguousarray(o.T), np.ascontiguousarray(d.T)
+    a, b, c = _quadric_coefficients(oc, dc, q)
+    scale = np.abs(q).max() * (dc[0] * dc[0] + dc[1] * dc[1] + dc[2] * dc[2])
+    t = _select_quadric_root(*_quadratic_roots(a, b, c, scale), oc, dc, t_min, clip)
     hit = np.isfinite(t)
-    points = o + np.where(hit, t, np.nan)[:, None] * d
-    normals = np.zeros_like(o)
-    if hit.all():
-        normals = _quadric_normals(q, points, d, bool(face_ray))
-    elif hit.any():
-        normals[hit] = _quadric_normals(q, points[hit], d[hit], bool(face_ray))
+    pc = oc + np.where(hit, t, 0.0) * dc
+    nc = _quadric_normals(q, pc, dc, bool(face_ray))
+    nc *= hit
+    pc[:, ~hit] = np.nan
+    points, normals = np.ascontiguousarray(pc.T), np.ascontiguousarray(nc.T)
     return QuadricHits(t.reshape(lead), normals.reshape(lead + (3,)),
                        points.reshape(lead + (3,)))
 
