@@ -1369,3 +1369,38 @@ def test_fact_ch15_distributed():
     # Cook's trick: N paths per pixel whatever the number of effects
     assert not truth("ch15-distributed-cost")
     assert rays.directions.shape == (3, 3, 64, 3)
+
+
+def test_fact_ch15_quadrics():
+    # the cylinder's normal: the numerical gradient of x^2 + y^2 - r^2, normalised
+    assert answer_text("ch15-cylinder-normal") == "$(x/r,\\ y/r,\\ 0)$"
+    rng = np.random.default_rng(1515)
+    r = 1.7
+    f = lambda p: p[0] ** 2 + p[1] ** 2 - r * r          # noqa: E731
+    for phi, z in zip(rng.uniform(0, 2 * np.pi, 20), rng.uniform(-3, 3, 20)):
+        p = np.array([r * np.cos(phi), r * np.sin(phi), z])
+        h = 1e-6
+        g = np.array([(f(p + e) - f(p - e)) / (2 * h) for e in np.eye(3) * h])
+        assert np.allclose(g / np.linalg.norm(g), [p[0] / r, p[1] / r, 0], atol=1e-6)
+    # a depends on d only: fit the quadratic f(o + t d) for several origins
+    assert truth("ch15-quadric-a-direction-only")
+    A = rng.normal(size=(4, 4))
+    Q = A + A.T
+    d = rng.normal(size=3)
+    leading = []
+    for o in rng.normal(size=(5, 3)) * 3:
+        ts = np.array([-1.0, 0.0, 2.0])
+        vals = [np.r_[o + t * d, 1] @ Q @ np.r_[o + t * d, 1] for t in ts]
+        leading.append(np.polyfit(ts, vals, 2)[0])
+    assert np.allclose(leading, np.r_[d, 0] @ Q @ np.r_[d, 0])
+    # a thin torus between two samples of the same sign: numpy.roots finds real roots anyway
+    assert not truth("ch15-implicit-sampling")
+    R, s = 2.0, 0.05
+    o, d = np.array([-5.0, 0.0, 0.0]), np.array([1.0, 0.0, 0.0])
+    torus = lambda p: (p @ p + R * R - s * s) ** 2 - 4 * R * R * (p[0] ** 2 + p[1] ** 2)  # noqa
+    ts = np.linspace(0, 10, 5)                           # step 2.5 > the tube's 0.1
+    vals = np.array([torus(o + t * d) for t in ts])
+    assert np.all(vals > 0)                              # no change of sign
+    # along x: (x^2 + R^2 - s^2)^2 - 4 R^2 x^2 with x = t - 5
+    x2 = np.roots([1.0, 2 * (R * R - s * s) - 4 * R * R, (R * R - s * s) ** 2])
+    assert np.all(np.isreal(x2)) and np.all(x2.real > 0)  # four real roots x = +-sqrt(x2)

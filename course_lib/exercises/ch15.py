@@ -71,3 +71,8 @@ from ._ch15.distributed import DistributedDomainChoice, SoftShadowShare  # noqa:
 
 __all__ += ["DistributedDomainChoice", "SoftShadowShare"]
 EXERCISES = EXERCISES + (DistributedDomainChoice, SoftShadowShare)
+# Quadrics and implicit surfaces: a finite open cylinder, two disks
+from ._ch15.quadrics import RayCylinderHit, RayDiskHit  # noqa: E402
+
+__all__ += ["RayCylinderHit", "RayDiskHit"]
+EXERCISES += (RayCylinderHit, RayDiskHit)

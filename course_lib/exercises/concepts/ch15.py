@@ -119,4 +119,31 @@ QUESTIONS = [
         "estimate all the integrals at once.",
         "Right: the dimensions are sampled together, one sample of each per path, not as a "
         "product grid."),
+    # Quadrics and implicit surfaces
+    _mc(15, "ch15-cylinder-normal",
+        "A ray hits the cylinder $x^2 + y^2 = r^2$ (axis $z$) at the point $p = (x, y, z)$. "
+        "What is the outward unit normal there?",
+        ("$(x, y, z) / \\|p\\|$", "That is the sphere's normal: it tilts up or down with $z$, "
+         "but the cylinder's equation has no $z$ term."),
+        ("$(x/r,\\ y/r,\\ 0)$", "The gradient of $x^2 + y^2 - r^2$ is $(2x, 2y, 0)$: "
+         "horizontal, away from the axis, of length $2r$."),
+        ("$(0, 0, 1)$", "That is the axis direction, tangent to the side wall (it is the normal "
+         "of the top cap)."),
+        ("$(x, y, 0)$", "The right direction, but its length is $r$: a normal for shading must be "
+         "a unit vector."),
+        correct=1),
+    _tf(15, "ch15-quadric-a-direction-only",
+        "For a ray $o + t\\,d$ and a quadric $\\tilde x^T Q \\tilde x = 0$, the coefficient "
+        "$a$ of $t^2$ depends only on the direction $d$, not on the origin $o$.", True,
+        "$a = \\tilde d^T Q \\tilde d$ with $\\tilde d = (d, 0)$: only the $t^2$ terms, made of "
+        "$d$ alone. $a = 0$ (a ray along a cylinder's axis or a cone's side) leaves a linear "
+        "equation.",
+        "It is true: the origin enters $b$ and $c$ only."),
+    _tf(15, "ch15-implicit-sampling",
+        "Marching along a ray with a fixed step and looking for a change of sign of $f$ finds "
+        "every intersection with an implicit surface $f = 0$.", False,
+        "A part thinner than one step can lie between two samples of the same sign, and a "
+        "tangent touch never changes sign: both are missed. The step must be smaller than the "
+        "thinnest feature (or bounded by a Lipschitz constant, as in sphere tracing).",
+        "Right: sampling can miss thin parts and grazing touches."),
 ]
