@@ -70,14 +70,14 @@ FIELD_KINDS = ("rotating", "double gyre", "oscillating vortex", "steady vortex")
 # Time-dependent example fields
 # ---------------------------------------------------------------------------------------------
 
-def _xy(points):
+def _unsteady_xy(points):
     if not (isinstance(points, np.ndarray) and points.dtype == np.float64
             and points.ndim >= 1 and points.shape[-1] == 2):     # the integrators' fast path
         points = as_points(points, "points", dims=2)
     return points[..., 0], points[..., 1]
 
 
-def _pack(vx, vy):
+def _unsteady_pack(vx, vy):
     """Two component arrays (broadcast) as one array of 2-vectors, without negative zeros."""
     vx, vy = np.broadcast_arrays(vx, vy)
     out = np.empty(vx.shape + (2,))
@@ -114,9 +114,9 @@ def rotating_uniform_flow(speed=1.0, omega=1.0, phase=0.0):
         raise ValueError("omega must not be zero (a flow that never turns is steady_flow)")
 
     def field(points, t):
-        x, _ = _xy(points)
+        x, _ = _unsteady_xy(points)
         theta = w * np.asarray(t, dtype=float) + phi
-        return _pack(u * np.cos(theta) + 0 * x, u * np.sin(theta) + 0 * x)
+        return _unsteady_pack(u * np.cos(theta) + 0 * x, u * np.sin(theta) + 0 * x)
     field.__name__ = "rotating_uniform_flow"
     field.params = {"speed": u, "omega": w, "phase": phi}
     return field
@@ -143,14 +143,14 @@ def double_gyre(amplitude=0.1, epsilon=0.25, omega=2 * np.pi / 10):
                    as_scalar(omega, "omega"))
 
     def field(points, t):
-        x, y = _xy(points)
+        x, y = _unsteady_xy(points)
         a = eps * np.sin(w * np.asarray(t, dtype=float))
         b = 1 - 2 * a
         f = a * x * x + b * x
         dfdx = 2 * a * x + b
         vx = -np.pi * amp * np.sin(np.pi * f) * np.cos(np.pi * y)
         vy = np.pi * amp * np.cos(np.pi * f) * np.sin(np.pi * y) * dfdx
-        return _pack(vx, vy)
+        return _unsteady_pack(vx, vy)
     field.__name__ = "double_gyre"
     field.params = {"amplitude": amp, "epsilon": eps, "omega": w}
     return field
@@ -173,9 +173,9 @@ def oscillating_vortex(amplitude=0.5, omega=1.0, spin=1.0):
                as_scalar(spin, "spin"))
 
     def field(points, t):
-        x, y = _xy(points)
+        x, y = _unsteady_xy(points)
         cx = a * np.sin(w * np.asarray(t, dtype=float))
-        return _pack(-s * y, s * (x - cx))
+        return _unsteady_pack(-s * y, s * (x - cx))
     field.__name__ = "oscillating_vortex"
     field.params = {"amplitude": a, "omega": w, "spin": s}
     return field
@@ -228,7 +228,7 @@ def unsteady_field(kind="rotating", **params):
 # Particles: RK4 in x and t
 # ---------------------------------------------------------------------------------------------
 
-def _sample_field(field, points, t):
+def _sample_unsteady(field, points, t):
     """field(points, t) checked: one finite 2-vector per point."""
     v = np.asarray(field(points, t), dtype=float)
     if v.shape != points.shape:
@@ -239,7 +239,7 @@ def _sample_field(field, points, t):
     return v
 
 
-def _check_field(field):
+def _check_unsteady_field(field):
     if not callable(field):
         raise TypeError("field must be a function field(points, t) -> velocities, got "
                         f"{type(field).__name__}")
@@ -253,10 +253,10 @@ def _rk4_advect(field, x, t_start, t_end, n_steps, record=False):
     hc = h[:, None]
     path = [x.copy()] if record else None
     for _ in range(n_steps):
-        k1 = _sample_field(field, x, t)
-        k2 = _sample_field(field, x + 0.5 * hc * k1, t + 0.5 * h)
-        k3 = _sample_field(field, x + 0.5 * hc * k2, t + 0.5 * h)
-        k4 = _sample_field(field, x + hc * k3, t + h)
+        k1 = _sample_unsteady(field, x, t)
+        k2 = _sample_unsteady(field, x + 0.5 * hc * k1, t + 0.5 * h)
+        k3 = _sample_unsteady(field, x + 0.5 * hc * k2, t + 0.5 * h)
+        k4 = _sample_unsteady(field, x + hc * k3, t + h)
         x = x + hc / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
         t = t + h
         if record:
@@ -287,7 +287,7 @@ def advect(field, points, t_start, t_end, n_steps=50, record=False):
     array([[ 0.,  2.],
            [-1.,  1.]])
     """
-    _check_field(field)
+    _check_unsteady_field(field)
     p = as_points(points, "points", dims=2)
     if p.ndim != 2:
         raise ValueError(f"points must be particles, shape (k, 2), got {p.shape}")
@@ -298,7 +298,7 @@ def advect(field, points, t_start, t_end, n_steps=50, record=False):
     return _rk4_advect(field, p.copy(), a, b, n, record=record)
 
 
-def _seeds(seeds, name):
+def _unsteady_seeds(seeds, name):
     p = as_points(seeds, name, dims=2)
     return p.ndim == 1, p.reshape(-1, 2)
 
@@ -335,15 +335,15 @@ def streamline_at(field, seeds, t, step=0.05, n_steps=100, both=False, method="r
            [0. , 0.5],
            [0. , 1. ]])
     """
-    _check_field(field)
-    single, p = _seeds(seeds, "seeds")
+    _check_unsteady_field(field)
+    single, p = _unsteady_seeds(seeds, "seeds")
     time = as_scalar(t, "t")
     h = as_scalar(step, "step")
     if h <= 0:
         raise ValueError(f"step must be positive, got {h:g}")
 
     def frozen(points):
-        return _sample_field(field, points, time)
+        return _sample_unsteady(field, points, time)
     fwd = _steady_streamline(frozen, p, h, n_steps, method=method)
     if both:
         back = _steady_streamline(frozen, p, -h, n_steps, method=method)
@@ -385,8 +385,8 @@ def pathline(field, seeds, t0, t1, n_steps=100):
     >>> np.round(p[-1], 6)                    # half a turn: (sin pi, 1 - cos pi)
     array([0., 2.])
     """
-    _check_field(field)
-    single, p = _seeds(seeds, "seeds")
+    _check_unsteady_field(field)
+    single, p = _unsteady_seeds(seeds, "seeds")
     a, b = as_scalar(t0, "t0"), as_scalar(t1, "t1")
     n = as_whole(n_steps, "n_steps", 1)
     k = len(p)
@@ -426,7 +426,7 @@ def streakline(field, release_point, t0, t1, n_particles=50, n_steps=40):
            [-1.,  1.],
            [ 0.,  0.]])
     """
-    _check_field(field)
+    _check_unsteady_field(field)
     r = as_points(release_point, "release_point", dims=2)
     if r.shape != (2,):
         raise ValueError(f"release_point must be one point (x, y), got shape {r.shape}")
@@ -466,7 +466,7 @@ def timeline(field, points, t0, t1, n_steps=100, record=False):
     array([[1., 1.],
            [1., 2.]])
     """
-    _check_field(field)
+    _check_unsteady_field(field)
     p = as_points(points, "points", dims=2)
     if p.ndim != 2:
         raise ValueError(f"points must be a line of particles, shape (k, 2), got {p.shape}")
