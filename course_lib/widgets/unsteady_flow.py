@@ -37,6 +37,7 @@ PRESETS = {
     "steady vortex": ({}, (-2.0, 2.0), (-2.0, 2.0), 2 * np.pi),
 }
 GLYPHS = 13
+STEPS = 80                      # RK4 steps of every particle (and the streamline)
 COLOURS = {"streamline": "#1f77b4", "pathline": "#d62728", "streakline": "#2ca02c",
            "timeline": "#9467bd"}
 
@@ -107,24 +108,29 @@ def scene(state):
     fx, fy = float(np.clip(state.release_x, 0, 1)), float(np.clip(state.release_y, 0, 1))
     r = np.array([xr[0] + fx * (xr[1] - xr[0]), yr[0] + fy * (yr[1] - yr[0])])
     size = max(xr[1] - xr[0], yr[1] - yr[0])
-
-    def unit(points, s):            # frozen at t, unit speed: the parameter s is arc length
-        v = field(points, t)
-        speed = np.hypot(v[..., 0], v[..., 1])[..., None]
-        return np.where(speed > 1e-12, v / np.maximum(speed, 1e-12), 0.0)
-    n_stream = 100
-    reach = 1.7 * size
-    both = U.advect(unit, [r, r], 0.0, [reach, -reach], n_steps=n_stream, record=True)
-    stream = _clip_both(np.concatenate([both[1, :0:-1], both[0]]), n_stream, xr, yr)
     half = 0.15 * (yr[1] - yr[0])
     row0 = np.column_stack([np.full(15, r[0]), np.linspace(r[1] - half, r[1] + half, 15)])
-    # one batch: the tagged particle (recorded: its pathline), the dye particles released at
-    # the times tau (the streakline), the row of bubbles (the timeline)
+    # One batch of particles, all advanced together by RK4 (STEPS steps each):
+    # 0, 1: the streamline through r forwards and backwards, in the field frozen at t with
+    #       unit speed (their "time" is the arc length s; the field is read at t);
+    # 2: the tagged particle, recorded: its pathline;
+    # 3 .. 52: the dye released at the times tau: the streakline;
+    # 53 ..: the row of bubbles released at t0: the timeline.
+    reach = 1.7 * size
     taus = np.linspace(0.0, t, 50)
-    starts = np.concatenate([[0.0], taus, np.zeros(15)])
-    particles = np.concatenate([r[None], np.tile(r, (50, 1)), row0])
-    moved = U.advect(field, particles, starts, t, n_steps=50, record=True)
-    path, streak, row = moved[0], moved[1:51, -1], moved[51:, -1]
+    starts = np.concatenate([[0.0, 0.0, 0.0], taus, np.zeros(15)])
+    ends = np.concatenate([[reach, -reach], np.full(66, t)])
+    particles = np.concatenate([np.tile(r, (53, 1)), row0])
+
+    def batch(points, times):
+        times = times.copy()
+        times[:2] = t                                      # the streamline: frozen at t
+        v = field(points, times)
+        v[:2] /= np.maximum(np.hypot(v[:2, 0], v[:2, 1]), 1e-12)[:, None]    # unit speed
+        return v
+    moved = U.advect(batch, particles, starts, ends, n_steps=STEPS, record=True)
+    stream = _clip_both(np.concatenate([moved[1, :0:-1], moved[0]]), STEPS, xr, yr)
+    path, streak, row = moved[2], moved[3:53, -1], moved[53:, -1]
     gx, gy = np.meshgrid(np.linspace(*xr, GLYPHS), np.linspace(*yr, GLYPHS))
     grid = np.column_stack([gx.ravel(), gy.ravel()])
     vectors = field(grid, t)
