@@ -130,6 +130,20 @@ def test_timeline_conserves_particles_and_follows_each_pathline():
     assert rec.shape == (11, 25, 2) and np.allclose(rec[0], line)
 
 
+def test_advect_moves_each_particle_from_its_own_start_time():
+    field = U.oscillating_vortex()
+    pts = np.array([[0.5, 0.2], [1.0, -0.3], [-0.4, 0.9]])
+    starts, ends = np.array([0.0, 1.5, 3.0]), np.array([4.0, 2.5, 0.5])
+    moved = U.advect(field, pts, starts, ends, n_steps=100)
+    for p, a, b, m in zip(pts, starts, ends, moved):
+        ref = solve_ivp(lambda t, q: field(q[None], t)[0], (a, b), p, rtol=1e-12, atol=1e-12)
+        assert np.allclose(m, ref.y[:, -1], atol=1e-8)
+    with pytest.raises(ValueError, match="t_start must be one time or one per particle"):
+        U.advect(field, pts, [0.0, 1.0], 2.0)
+    with pytest.raises(ValueError, match="points"):
+        U.advect(field, [0.0, 1.0], 0.0, 2.0)
+
+
 # --- steady fields: the three lines coincide --------------------------------------------------
 
 @settings(max_examples=25, deadline=None)

@@ -292,8 +292,14 @@ def advect(field, points, t_start, t_end, n_steps=50, record=False):
     if p.ndim != 2:
         raise ValueError(f"points must be particles, shape (k, 2), got {p.shape}")
     k = len(p)
-    a = np.broadcast_to(as_array(t_start, "t_start"), (k,)).astype(float)
-    b = np.broadcast_to(as_array(t_end, "t_end"), (k,)).astype(float)
+    times = []
+    for name, value in (("t_start", t_start), ("t_end", t_end)):
+        arr = as_array(value, name)
+        if arr.shape not in ((), (k,)):
+            raise ValueError(f"{name} must be one time or one per particle ({k}), got shape "
+                             f"{arr.shape}")
+        times.append(np.broadcast_to(arr, (k,)).astype(float))
+    a, b = times
     n = as_whole(n_steps, "n_steps", 1)
     return _rk4_advect(field, p.copy(), a, b, n, record=record)
 
