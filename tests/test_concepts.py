@@ -1404,3 +1404,42 @@ def test_fact_ch15_quadrics():
     # along x: (x^2 + R^2 - s^2)^2 - 4 R^2 x^2 with x = t - 5
     x2 = np.roots([1.0, 2 * (R * R - s * s) - 4 * R * R, (R * R - s * s) ** 2])
     assert np.all(np.isreal(x2)) and np.all(x2.real > 0)  # four real roots x = +-sqrt(x2)
+
+
+def test_fact_ch18_unsteady():
+    from scipy.integrate import solve_ivp
+    from course_lib.scivis import lic
+    # a pathline is tangent to the frozen field where it passes (double gyre typed here)
+    assert answer_text("ch18-pathline-tangent") == "True"
+
+    def gyre(t, p, A=0.1, eps=0.25, w=2 * math.pi / 10):
+        a = eps * math.sin(w * t)
+        f, dfdx = a * p[0] ** 2 + (1 - 2 * a) * p[0], 2 * a * p[0] + 1 - 2 * a
+        return np.array([-math.pi * A * math.sin(math.pi * f) * math.cos(math.pi * p[1]),
+                         math.pi * A * math.cos(math.pi * f) * math.sin(math.pi * p[1]) * dfdx])
+
+    sol = solve_ivp(gyre, (0, 8), [0.3, 0.4], dense_output=True, rtol=1e-11, atol=1e-12)
+    for t in (1.0, 4.0, 7.0):
+        tangent = (sol.sol(t + 1e-5) - sol.sol(t - 1e-5)) / 2e-5
+        assert np.allclose(tangent, gyre(t, sol.sol(t)), atol=1e-6)
+    # the rotating uniform flow: pathlines are circles of radius U / omega
+    assert answer_text("ch18-rotating-flow").startswith("A circle")
+    U, w = 1.5, 0.6
+    path = solve_ivp(lambda t, p: [U * math.cos(w * t), U * math.sin(w * t)], (0, 20), [0, 0],
+                     rtol=1e-11, atol=1e-12, t_eval=np.linspace(0, 20, 200)).y.T
+    centre = np.array([0.0, U / w])              # x(t) = (U/w) (sin wt, 1 - cos wt)
+    assert np.allclose(np.linalg.norm(path - centre, axis=1), U / w, atol=1e-8)
+    # a longer box kernel averages more samples: the spread falls like 1 / sqrt(2L + 1)
+    assert "longer and smoother" in answer_text("ch18-lic-kernel")
+    noise = RNG.random(200000)
+    spreads = [np.convolve(noise, np.ones(2 * L + 1) / (2 * L + 1), mode="valid").std()
+               for L in (1, 4, 16)]
+    assert spreads[0] > spreads[1] > spreads[2]
+    assert math.isclose(spreads[2] * math.sqrt(33), noise.std(), rel_tol=0.05)
+    # LIC ignores orientation and speed
+    assert answer_text("ch18-lic-orientation") == "True"
+    y, x = np.mgrid[0:40, 0:40] - 19.5
+    u, v = -y + 0.3 * x, x
+    ref = lic(u, v, kernel_length=6, seed=3)
+    assert np.allclose(lic(-u, -v, kernel_length=6, seed=3), ref)
+    assert np.allclose(lic(2.5 * u, 2.5 * v, kernel_length=6, seed=3), ref)

@@ -63,3 +63,9 @@ EXERCISES = (
     RK4Step,
     EulerDrift,
 )
+
+# Unsteady flow and line integral convolution (course_lib/exercises/_ch18/unsteady.py)
+from ._ch18.unsteady import FlowLineKind, LICPixel, PathlineEulerSteps  # noqa: E402
+
+__all__ += ["FlowLineKind", "LICPixel", "PathlineEulerSteps"]
+EXERCISES += (FlowLineKind, PathlineEulerSteps, LICPixel)

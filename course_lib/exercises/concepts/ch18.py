@@ -81,4 +81,47 @@ QUESTIONS = [
         "Dense glyphs overlap and clutter the view; subsample, or use streamlines or texture "
         "methods (LIC) for dense fields.",
         "Right: glyphs must be spaced out; otherwise they clutter."),
+    # unsteady flow and line integral convolution
+    _tf(18, "ch18-pathline-tangent",
+        "In a time-dependent flow, a pathline is tangent at each of its points to the "
+        "streamline through that point of the field frozen at the moment the particle passes "
+        "there.", True,
+        "The particle moves with the velocity v(x, t) of where and when it is, and a streamline "
+        "of the field frozen at t has that direction at x. It touches that streamline only "
+        "there: a moment later the particle follows another instant's field, which is why the "
+        "two curves differ as a whole.",
+        "It is true: dx/dt = v(x, t) is the direction of the frozen field's streamline at that "
+        "point and time; the curves only differ as a whole."),
+    _mc(18, "ch18-rotating-flow",
+        "A uniform flow has speed U everywhere, and its direction turns at the constant rate "
+        "ω. What is the pathline of a particle?",
+        ("A straight line", "That is a streamline: at each instant the field is uniform, so "
+         "its streamlines are straight, but the direction keeps turning."),
+        ("A circle of radius U/ω", "The particle's velocity has constant length U and "
+         "turns at the rate ω, like a point on a circle of radius U/ω."),
+        ("An outward spiral", "The speed does not grow and the turning rate is constant: the "
+         "curvature ω/U is constant, so the path closes."),
+        ("The particle stays where it is", "The velocity is never zero: the particle moves "
+         "with speed U all the time."),
+        correct=1),
+    _mc(18, "ch18-lic-kernel",
+        "In line integral convolution, what happens when the kernel length L is increased?",
+        ("The streaks get longer and smoother, and the contrast drops",
+         "Each pixel averages more noise samples along its streamline (2L/h + 1), so the "
+         "values vary less and neighbours along a streamline share more of them."),
+        ("The picture turns back into the white noise", "That is the other end: with L close "
+         "to 0 each pixel keeps its own noise value."),
+        ("The colour starts to show the speed", "LIC uses only the direction; speed has to be "
+         "added separately, e.g. by colour."),
+        ("The streamlines get straighter", "The traces follow the field whatever their length; "
+         "a longer kernel follows a curved streamline further."),
+        correct=0),
+    _tf(18, "ch18-lic-orientation",
+        "A LIC image (with a symmetric kernel) shows along which lines the flow runs, but not "
+        "which way along them it goes nor how fast.", True,
+        "Reversing or scaling the field gives the same streamlines and the same average of the "
+        "noise along them; orientation and speed need extra cues (animation of the kernel "
+        "phase, arrows, colour).",
+        "It is true: v and -v (or 2v) give the same picture, as only the streamline through "
+        "each pixel matters."),
 ]
