@@ -63,3 +63,8 @@ EXERCISES = (
     RK4Step,
     EulerDrift,
 )
+# --- vector-field topology (course_lib/exercises/_ch18/topology.py) ---
+from ._ch18.topology import ClassifyCriticalPoint, GriddedFieldStep  # noqa: E402
+
+__all__ += ["ClassifyCriticalPoint", "GriddedFieldStep"]
+EXERCISES += (ClassifyCriticalPoint, GriddedFieldStep)
