@@ -96,10 +96,10 @@ def _as_vector_field(field):
 def _cell_coords(shape, spacing, origin, x, y):
     """Cell indices (i, j) and local (s, t) of points, clamped into the grid."""
     ny, nx = shape
-    gx = np.clip((x - origin[0]) / spacing[0], 0.0, nx - 1)
-    gy = np.clip((y - origin[1]) / spacing[1], 0.0, ny - 1)
-    i = np.minimum(np.floor(gx).astype(int), nx - 2)
-    j = np.minimum(np.floor(gy).astype(int), ny - 2)
+    gx = np.minimum(np.maximum((x - origin[0]) / spacing[0], 0.0), nx - 1)
+    gy = np.minimum(np.maximum((y - origin[1]) / spacing[1], 0.0), ny - 1)
+    i = np.minimum(gx.astype(int), nx - 2)
+    j = np.minimum(gy.astype(int), ny - 2)
     return i, j, gx - i, gy - j
 
 
@@ -107,8 +107,9 @@ def _bilinear(g, spacing, origin, x, y):
     """The bilinear interpolation of g (ny, nx, 2) at points x, y (same shape): (..., 2)."""
     i, j, s, t = _cell_coords(g.shape[:2], spacing, origin, x, y)
     s, t = s[..., None], t[..., None]
-    return ((1 - s) * (1 - t) * g[j, i] + s * (1 - t) * g[j, i + 1]
-            + (1 - s) * t * g[j + 1, i] + s * t * g[j + 1, i + 1])
+    c00, c10, c01, c11 = g[j, i], g[j, i + 1], g[j + 1, i], g[j + 1, i + 1]
+    bottom = c00 + s * (c10 - c00)
+    return bottom + t * (c01 + s * (c11 - c01) - bottom)
 
 
 def bilinear_velocity(grid_u, grid_v, x, y, spacing=1.0, origin=(0.0, 0.0)):
@@ -154,10 +155,13 @@ def bilinear_velocity(grid_u, grid_v, x, y, spacing=1.0, origin=(0.0, 0.0)):
 # Integration in a gridded field
 # ---------------------------------------------------------------------------------------------
 
-def _advance(g, sp, org, lo, hi, seeds, h, n, method, min_speed):
+def _advance(g, sp, org, lo, hi, seeds, h, n, method, min_speed, normalize=False):
     """Advance all seeds together; (k, n + 1, 2) with NaN after a line stopped."""
     def vel(p):
-        return _bilinear(g, sp, org, p[:, 0], p[:, 1])
+        v = _bilinear(g, sp, org, p[:, 0], p[:, 1])
+        if normalize:
+            v = v / np.maximum(np.hypot(v[:, 0], v[:, 1]), min_speed)[:, None]
+        return v
 
     lines = np.full((len(seeds), n + 1, 2), np.nan)
     lines[:, 0] = seeds
@@ -168,7 +172,10 @@ def _advance(g, sp, org, lo, hi, seeds, h, n, method, min_speed):
         if ids.size == 0:
             break
         p = cur[ids]
-        k1 = vel(p)
+        k1 = _bilinear(g, sp, org, p[:, 0], p[:, 1])
+        speed = np.hypot(k1[:, 0], k1[:, 1])
+        if normalize:
+            k1 = k1 / np.maximum(speed, min_speed)[:, None]
         if method == "euler":
             new = p + h * k1
         elif method == "rk2":
@@ -178,14 +185,15 @@ def _advance(g, sp, org, lo, hi, seeds, h, n, method, min_speed):
             k3 = vel(p + 0.5 * h * k2)
             k4 = vel(p + h * k3)
             new = p + (h / 6.0) * (k1 + 2 * k2 + 2 * k3 + k4)
-        ok = (np.hypot(k1[:, 0], k1[:, 1]) >= min_speed) & ((new >= lo) & (new <= hi)).all(1)
+        ok = (speed >= min_speed) & ((new >= lo) & (new <= hi)).all(1)
         alive[ids[~ok]] = False
         cur[ids[ok]] = new[ok]
         lines[ids[ok], step + 1] = new[ok]
     return lines
 
 
-def integrate_gridded(field, seed, step, n, method="rk4", backward=False, min_speed=None):
+def integrate_gridded(field, seed, step, n, method="rk4", backward=False, min_speed=None,
+                      normalize=False):
     r"""A streamline of a gridded 2D field, the velocity interpolated bilinearly at every stage.
 
     Euler :math:`x_{k+1} = x_k + h\,v(x_k)`; RK2 (midpoint)
@@ -210,6 +218,10 @@ def integrate_gridded(field, seed, step, n, method="rk4", backward=False, min_sp
         separatrices.
     min_speed : float, optional
         Default: 1e-6 times the largest speed on the grid.
+    normalize : bool
+        Integrate along the arc length, :math:`\mathrm d x/\mathrm d s = v/|v|`: the step is
+        then a length, not a time (the same curve, traced at unit speed; slow regions no longer
+        need many steps).
 
     Returns
     -------
@@ -245,7 +257,8 @@ def integrate_gridded(field, seed, step, n, method="rk4", backward=False, min_sp
         min_speed = 1e-6 * float(np.hypot(g[..., 0], g[..., 1]).max())
     lo = org
     hi = org + sp * (np.array(g.shape[1::-1]) - 1)
-    lines = _advance(-g if backward else g, sp, org, lo, hi, seeds, h, n, method, min_speed)
+    lines = _advance(-g if backward else g, sp, org, lo, hi, seeds, h, n, method, min_speed,
+                     bool(normalize))
     out = [line[np.isfinite(line[:, 0])] for line in lines]
     return out[0] if single else out
 
@@ -547,8 +560,9 @@ def separatrices(field, saddle, eps=None, step=None, n=400, method="rk4"):
     eps : float, optional
         Offset of the seeds from the saddle. Default: a twentieth of the smaller grid spacing.
     step : float, optional
-        Integration step. Default: half the smaller spacing divided by the largest speed (no
-        step crosses more than half a cell).
+        Integration step, a length: the separatrices are integrated along the arc length
+        (``normalize=True`` of :func:`integrate_gridded`), so that the slow flow next to the
+        saddle costs no more steps than elsewhere. Default: half the smaller grid spacing.
     n : int
         Steps per separatrix.
     method : {"euler", "rk2", "rk4"}
@@ -591,12 +605,13 @@ def separatrices(field, saddle, eps=None, step=None, n=400, method="rk4"):
     h_min = float(sp.min())
     eps = h_min / 20 if eps is None else as_positive(eps, "eps")
     speed = float(np.hypot(g[..., 0], g[..., 1]).max())
-    step = h_min / 2 / max(speed, 1e-300) if step is None else as_positive(step, "step")
+    step = h_min / 2 if step is None else as_positive(step, "step")
     out = {"directions": (unstable / np.linalg.norm(unstable), stable / np.linalg.norm(stable))}
     for name, e, back in (("unstable", unstable, False), ("stable", stable, True)):
         e = e / np.linalg.norm(e)
         seeds = np.array([p + eps * e, p - eps * e])
-        lines = integrate_gridded(field, seeds, step, n, method, backward=back)
+        lines = integrate_gridded(field, seeds, step, n, method, backward=back,
+                                  min_speed=1e-9 * speed, normalize=True)
         out[name] = [np.vstack([p, line]) for line in lines]
     return out
 
@@ -612,7 +627,7 @@ PRESETS = {
                ((-1.5, -1.5), (1.5, 1.5))),
     "saddle and two foci": (("stiffness k", "damping δ"), (1.0, 0.5), ((-0.5, 1.5), (-1.0, 1.0)),
                             ((-2.0, -1.5), (2.0, 1.5))),
-    "double gyre": (("time t", "amplitude ε"), (0.0, 0.25), ((0.0, 10.0), (0.0, 0.5)),
+    "double gyre": (("time t", "amplitude ε"), (2.5, 0.25), ((0.0, 10.0), (0.0, 0.5)),
                     ((0.0, 0.0), (2.0, 1.0))),
 }
 
