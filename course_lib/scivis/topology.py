@@ -23,13 +23,13 @@ from .._validate import as_array, as_choice, as_positive, as_vector, as_whole
 from ._common import _spacing
 from .data import Field
 
-__all__ = ["CLASSES", "PRESETS", "Classification", "CriticalPoint", "bilinear_velocity",
-           "classify_critical_point", "critical_points", "gridded_field", "integrate_gridded",
-           "jacobian_at", "preset_field", "separatrices"]
+__all__ = ["CRITICAL_CLASSES", "FLOW_PRESETS", "Classification", "CriticalPoint",
+           "bilinear_velocity", "classify_critical_point", "critical_points", "gridded_field",
+           "integrate_gridded", "jacobian_at", "preset_field", "separatrices"]
 
 #: The classes :func:`classify_critical_point` returns.
-CLASSES = ("saddle", "attracting node", "repelling node", "attracting focus", "repelling focus",
-           "centre", "degenerate")
+CRITICAL_CLASSES = ("saddle", "attracting node", "repelling node", "attracting focus",
+                    "repelling focus", "centre", "degenerate")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -306,7 +306,7 @@ def classify_critical_point(jacobian, tol=1e-9):
     Returns
     -------
     Classification
-        ``kind`` (one of :data:`CLASSES`), ``eigenvalues`` (2 complex numbers, real part
+        ``kind`` (one of :data:`CRITICAL_CLASSES`), ``eigenvalues`` (2 complex numbers, real part
         descending) and ``reason`` (a sentence).
 
     Raises
@@ -622,7 +622,7 @@ def separatrices(field, saddle, eps=None, step=None, n=400, method="rk4"):
 
 #: name -> (the two parameters' names, their defaults, their (low, high) ranges, the domain
 #: ((x0, y0), (x1, y1))).
-PRESETS = {
+FLOW_PRESETS = {
     "linear": (("trace", "determinant"), (-1.0, 1.25), ((-3.0, 3.0), (-3.0, 3.0)),
                ((-1.5, -1.5), (1.5, 1.5))),
     "saddle and two foci": (("stiffness k", "damping δ"), (1.0, 0.5), ((-0.5, 1.5), (-1.0, 1.0)),
@@ -669,9 +669,9 @@ def preset_field(name, p=None, q=None, n=33):
     Parameters
     ----------
     name : str
-        A key of :data:`PRESETS`.
+        A key of :data:`FLOW_PRESETS`.
     p, q : float, optional
-        The two parameters (defaults in :data:`PRESETS`).
+        The two parameters (defaults in :data:`FLOW_PRESETS`).
     n : int
         Nodes along y (x gets about as many per unit length), >= 3. Values below 1e-12 of
         the largest are set to 0 (rounding noise would hide zeros on the border).
@@ -686,8 +686,8 @@ def preset_field(name, p=None, q=None, n=33):
     >>> f.values[1, 2]                      # v(1.5, 0) = (-0.75, -1.5 * 1)
     array([-0.75, -1.5 ])
     """
-    as_choice(name, "name", tuple(PRESETS))
-    _, defaults, _, ((x0, y0), (x1, y1)) = PRESETS[name]
+    as_choice(name, "name", tuple(FLOW_PRESETS))
+    _, defaults, _, ((x0, y0), (x1, y1)) = FLOW_PRESETS[name]
     p = defaults[0] if p is None else float(p)
     q = defaults[1] if q is None else float(q)
     if not (np.isfinite(p) and np.isfinite(q)):

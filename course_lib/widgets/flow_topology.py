@@ -1,7 +1,7 @@
 r"""Flow-topology explorer: critical points classified by their Jacobian, separatrices, and a
 streamline integrated in the gridded field.
 
-A field is chosen from presets (:data:`course_lib.scivis.topology.PRESETS`) and sampled on a
+A field is chosen from presets (:data:`course_lib.scivis.topology.FLOW_PRESETS`) and sampled on a
 grid; :func:`~course_lib.scivis.topology.critical_points` finds the zeros of its bilinear
 interpolant, cell by cell, and marks each by its class (saddle, node, focus, centre). From every
 saddle the four separatrices are traced (orange: unstable, leaving; blue: stable, arriving):
@@ -92,7 +92,7 @@ def _topo_field_parts(preset, p, q):
             seps[name] = lines
         else:
             seps[name] = []
-    (x0, y0), (x1, y1) = topology.PRESETS[preset][3]
+    (x0, y0), (x1, y1) = topology.FLOW_PRESETS[preset][3]
     ny = GLYPHS
     nx = int(round(ny * (x1 - x0) / (y1 - y0)))
     cx = x0 + (np.arange(nx) + 0.5) * (x1 - x0) / nx
@@ -136,7 +136,8 @@ def scene(state):
         ``field`` (the gridded Field), ``points`` (list of CriticalPoint), ``by_class`` (class
         -> (k, 2) positions), ``trace_det`` (class -> (k, 2) (trace, determinant) of its
         points), ``unstable``/``stable`` (polylines, NaN between separatrices), ``glyphs``
-        (arrow outlines) and ``streamlets`` (short lines through the glyph centres), ``line`` (the seed's streamline),
+        (arrow outlines) and ``streamlets`` (short lines through the glyph centres),
+        ``line`` (the seed's streamline),
         ``domain`` and ``text``.
 
     Examples
@@ -149,7 +150,7 @@ def scene(state):
     >>> s["trace_det"]["attracting focus"].round(6).tolist()
     [[-1.0, 1.25]]
     """
-    as_choice(state.preset, "preset", tuple(topology.PRESETS))
+    as_choice(state.preset, "preset", tuple(topology.FLOW_PRESETS))
     as_choice(state.method, "method", METHODS)
     as_choice(state.style, "style", STYLES)
     f, cps, seps, glyphs, streamlets, _ = _topo_field_parts(state.preset, float(state.p),
@@ -160,7 +161,7 @@ def scene(state):
                               for c in cps if c.kind == k]).reshape(-1, 2) for k in CLASS_STYLE}
     line = topology.integrate_gridded(f, np.asarray(state.seed, float), state.step, SEED_STEPS,
                                       state.method)
-    names = topology.PRESETS[state.preset][0]
+    names = topology.FLOW_PRESETS[state.preset][0]
     rows = []
     for c in cps:
         lam = c.eigenvalues
@@ -179,11 +180,13 @@ def scene(state):
     if state.preset == "linear":
         c = cps[0].reason if cps else ""
         text += f"<br>Why: {c}."
+    none = np.zeros((0, 2))
+    show = state.show_separatrices
     return {"field": f, "points": cps, "by_class": by_class, "trace_det": trace_det,
-            "unstable": _topo_joined(seps["unstable"]) if state.show_separatrices else np.zeros((0, 2)),
-            "stable": _topo_joined(seps["stable"]) if state.show_separatrices else np.zeros((0, 2)),
+            "unstable": _topo_joined(seps["unstable"]) if show else none,
+            "stable": _topo_joined(seps["stable"]) if show else none,
             "glyphs": glyphs, "streamlets": streamlets, "line": line,
-            "domain": topology.PRESETS[state.preset][3], "text": text}
+            "domain": topology.FLOW_PRESETS[state.preset][3], "text": text}
 
 
 class FlowTopologyExplorer(Explorer):
@@ -260,8 +263,8 @@ class FlowTopologyExplorer(Explorer):
                                                self.stable, self.line, *self.markers.values(),
                                                self.seed, *self.td_points.values()])
         self.drag = DraggablePoints(ax, self.state.seed[None], self._on_drag)
-        names, defaults, ranges, _ = topology.PRESETS[self.state.preset]
-        self.preset = labelled(w.Dropdown, "field", options=tuple(topology.PRESETS),
+        names, defaults, ranges, _ = topology.FLOW_PRESETS[self.state.preset]
+        self.preset = labelled(w.Dropdown, "field", options=tuple(topology.FLOW_PRESETS),
                                value=self.state.preset)
         self.p = slider(names[0], self.state.p, *ranges[0], 0.05, readout_format=".2f")
         self.q = slider(names[1], self.state.q, *ranges[1], 0.05, readout_format=".2f")
@@ -285,13 +288,13 @@ class FlowTopologyExplorer(Explorer):
         self._draw(scene(self.state))
 
     def _limits(self):
-        (x0, y0), (x1, y1) = topology.PRESETS[self.state.preset][3]
+        (x0, y0), (x1, y1) = topology.FLOW_PRESETS[self.state.preset][3]
         self.ax.set(xlim=(x0, x1), ylim=(y0, y1))
         self.blitter.forget_background()
 
     def _on_preset(self, change):
         self.state.preset = change["new"]
-        names, defaults, ranges, ((x0, y0), (x1, y1)) = topology.PRESETS[self.state.preset]
+        names, defaults, ranges, ((x0, y0), (x1, y1)) = topology.FLOW_PRESETS[self.state.preset]
         self.state.p, self.state.q = defaults
         self.state.seed = np.array([x0 + 0.8 * (x1 - x0), y0 + 0.7 * (y1 - y0)])
         self.drag.points[0] = self.state.seed

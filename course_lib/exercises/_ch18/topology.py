@@ -20,7 +20,7 @@ __all__ = [
 # The class of a critical point
 # ---------------------------------------------------------------------------------------------
 
-_TOPO_CLASSES = topology.CLASSES
+_TOPO_CLASSES = topology.CRITICAL_CLASSES
 _TOPO_TARGETS = ("saddle", "attracting node", "repelling node", "attracting focus",
                  "repelling focus", "centre")
 
@@ -304,7 +304,8 @@ class GriddedFieldStep(_Chapter18):
             Mistake(self._step(lambda q: self.corners["00"]), r"You used the velocity at the "
                     r"cell's **lower-left corner** $v_{00}$ for the whole cell; interpolate the "
                     r"four corners at the point.", "wrong corner"),
-            Mistake(self.p + (self.expected - self.p) / self.h, r"You forgot the **step size**: the point "
+            Mistake(self.p + (self.expected - self.p) / self.h, r"You forgot the **step size**: "
+                    r"the point "
                     r"moves by $h\,v$, not by $v$.", "no h"),
         ]
         if self.method == "rk2":
