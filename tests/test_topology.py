@@ -15,7 +15,8 @@ from scipy.linalg import expm
 from course_lib.scivis import Field
 from course_lib.scivis.topology import (CRITICAL_CLASSES, bilinear_velocity,
                                         classify_critical_point, critical_points,
-                                        gridded_field, integrate_gridded, jacobian_at, preset_field, separatrices)
+                                        gridded_field, integrate_gridded, jacobian_at,
+                                        preset_field, separatrices)
 
 RNG = np.random.default_rng(18)
 
