@@ -382,6 +382,13 @@ def _cell_coefficients(g):
     return k[..., 0], k[..., 1]
 
 
+def _cell_coefficients_at(g, j, i):
+    """The bilinear coefficients (k, 4) of u and of v in the cells (j, i) only."""
+    c00, c10, c01, c11 = g[j, i], g[j, i + 1], g[j + 1, i], g[j + 1, i + 1]
+    k = np.stack([c00, c10 - c00, c01 - c00, c11 - c10 - c01 + c00], axis=-2)
+    return k[..., 0], k[..., 1]
+
+
 def _bilinear_jacobian(a, b, s, t, sp):
     """The Jacobian of the bilinear interpolant in world units at local (s, t): (..., 2, 2)."""
     j = np.empty(np.shape(s) + (2, 2))
@@ -481,15 +488,15 @@ def critical_points(field, tol=1e-9):
     [('saddle', array([0., 0.]))]
     """
     g, sp, org = _as_vector_field(field)
-    a, b = _cell_coefficients(g)
-    ny1, nx1 = a.shape[:2]
-    a, b = a.reshape(-1, 4), b.reshape(-1, 4)
-    c = np.stack([g[:-1, :-1], g[:-1, 1:], g[1:, :-1], g[1:, 1:]], axis=2).reshape(-1, 4, 2)
-    candidate = ((c.min(axis=1) <= 0) & (c.max(axis=1) >= 0)).all(axis=1)
-    ids = np.flatnonzero(candidate)
-    k, s, t = _cell_zeros(a[ids], b[ids])
-    k = ids[k]
-    j, i = np.divmod(k, nx1)
+    nx1 = g.shape[1] - 1
+    candidate = np.ones((g.shape[0] - 1, nx1), dtype=bool)
+    for comp in (g[..., 0], g[..., 1]):        # a cell whose 4 corners share a strict sign
+        for side in (comp > 0, comp < 0):       # cannot hold a zero of this component
+            candidate &= ~(side[:-1, :-1] & side[:-1, 1:] & side[1:, :-1] & side[1:, 1:])
+    jj, ii = np.nonzero(candidate)
+    a, b = _cell_coefficients_at(g, jj, ii)
+    k, s, t = _cell_zeros(a, b)
+    j, i = jj[k], ii[k]
     pos = org + sp * np.stack([i + s, j + t], axis=1)
     jac = _bilinear_jacobian(a[k], b[k], s, t, sp)
     order = np.lexsort((pos[:, 0], pos[:, 1]))
