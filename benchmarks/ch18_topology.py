@@ -84,11 +84,11 @@ def widgets(quick=False):
     import matplotlib.pyplot as plt
 
     from benchmarks import widget_row
-    from course_lib.widgets.flow_topology import FlowTopologyExplorer
+    from course_lib.widgets.flow_topology import FlowTopologyExplorer, State
 
     repeat = 5 if quick else 40
     rows = []
-    ex = FlowTopologyExplorer()
+    ex = FlowTopologyExplorer(State(preset="linear", p=-1.0, q=1.25, seed=np.array([1.2, 0.6])))
     ex.fig.canvas.draw()
     dets = np.round(np.linspace(-1.5, 2.5, 41), 2)
     rows.append(widget_row("flow topology explorer (determinant slider)",

@@ -24,7 +24,7 @@ def _class(tr, det):
 @pytest.mark.parametrize("tr,det", [(-1.0, 1.25), (-2.5, 1.0), (1.0, 2.0), (2.5, 1.0),
                                     (0.0, 1.5), (0.5, -1.0)])
 def test_linear_field_classes_follow_the_sliders(tr, det):
-    s = W.scene(W.State(p=tr, q=det))
+    s = W.scene(W.State(preset="linear", p=tr, q=det))
     (cp,) = s["points"]
     assert np.allclose(cp.position, 0, atol=1e-12)
     assert cp.kind == _class(tr, det)
@@ -48,7 +48,8 @@ def test_duffing_and_double_gyre_points():
 
 def test_seed_line_is_the_gridded_streamline():
     from course_lib.scivis.topology import integrate_gridded, preset_field
-    st = W.State(method="euler", step=0.1, seed=np.array([1.0, -0.5]))
+    st = W.State(preset="linear", p=-1.0, q=1.25, method="euler", step=0.1,
+                 seed=np.array([1.0, -0.5]))
     s = W.scene(st)
     ref = integrate_gridded(preset_field("linear", st.p, st.q, n=W.GRID), st.seed, 0.1,
                             W.SEED_STEPS, "euler")
@@ -68,10 +69,12 @@ def _changed(a, b):
 
 
 def test_every_control_changes_the_picture():
-    ex = W.FlowTopologyExplorer()
-    settings = [(ex.method, "euler"), (ex.step, 0.25), (ex.p, 1.0), (ex.q, -0.5),
-                (ex.style, "streamlets"), (ex.sep_box, False), (ex.preset, "double gyre"),
-                (ex.q, 0.45), (ex.p, 7.0)]
+    ex = W.FlowTopologyExplorer()                 # the default state: each control matters
+    assert ex.state.preset == "saddle and two foci"
+    settings = [(ex.method, "euler"), (ex.step, 0.25), (ex.p, 0.5), (ex.q, 0.2),
+                (ex.style, "streamlets"), (ex.sep_box, False), (ex.preset, "linear"),
+                (ex.q, -0.5), (ex.p, 1.0), (ex.preset, "double gyre"), (ex.q, 0.45),
+                (ex.p, 7.0)]
     for control, value in settings:
         before = _picture(ex)
         text = ex.info.value
@@ -81,7 +84,8 @@ def test_every_control_changes_the_picture():
 
 
 def test_sliders_relabel_with_the_preset():
-    ex = W.FlowTopologyExplorer()
+    ex = W.FlowTopologyExplorer(W.State(preset="linear", p=-1.0, q=1.25))
+    assert ex.p.description == "trace"
     ex.preset.value = "saddle and two foci"
     assert ex.p.description == "stiffness k" and ex.state.p == ex.p.value == 1.0
     assert "saddle" in ex.info.value
@@ -92,8 +96,8 @@ def test_sliders_relabel_with_the_preset():
 def test_dragging_the_seed_moves_the_streamline():
     ex = W.FlowTopologyExplorer()
     before = np.array(ex.line.get_xydata())
-    harness.drag(ex.ax, tuple(ex.state.seed), (-1.0, 1.0))
-    assert np.allclose(ex.state.seed, [-1.0, 1.0], atol=0.05)
+    harness.drag(ex.ax, tuple(ex.state.seed), (1.5, -1.0))
+    assert np.allclose(ex.state.seed, [1.5, -1.0], atol=0.05)
     after = np.array(ex.line.get_xydata())
     assert not np.allclose(before[:5], after[:5])
     assert np.allclose(after[0], ex.state.seed)

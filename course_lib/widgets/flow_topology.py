@@ -51,15 +51,15 @@ class State:
     Examples
     --------
     >>> State().preset, State().p, State().q
-    ('linear', -1.0, 1.25)
+    ('saddle and two foci', 1.0, 0.5)
     """
 
-    preset: str = "linear"
-    p: float = -1.0
-    q: float = 1.25
+    preset: str = "saddle and two foci"
+    p: float = 1.0
+    q: float = 0.5
     method: str = "rk4"
     step: float = 0.15
-    seed: np.ndarray = field(default_factory=lambda: np.array([1.2, 0.6]))
+    seed: np.ndarray = field(default_factory=lambda: np.array([-0.5, 1.2]))
     style: str = "arrows"
     show_separatrices: bool = True
 
@@ -144,7 +144,7 @@ def scene(state):
     --------
     The linear field with trace -1 and determinant 1.25 has an attracting focus at the origin:
 
-    >>> s = scene(State())
+    >>> s = scene(State(preset="linear", p=-1.0, q=1.25, seed=np.array([1.2, 0.6])))
     >>> [c.kind for c in s["points"]], s["by_class"]["attracting focus"].tolist()
     (['attracting focus'], [[0.0, 0.0]])
     >>> s["trace_det"]["attracting focus"].round(6).tolist()
@@ -197,7 +197,7 @@ class FlowTopologyExplorer(Explorer):
 
     Examples
     --------
-    >>> ex = FlowTopologyExplorer()
+    >>> ex = FlowTopologyExplorer(State(preset="linear", p=-1.0, q=1.25))
     >>> ex.q.value = -1.0                      # determinant < 0: the point becomes a saddle
     >>> "saddle" in ex.info.value
     True
