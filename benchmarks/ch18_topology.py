@@ -8,13 +8,13 @@ from benchmarks import operation_row
 
 
 def _wavy_field(n):
-    """A 256 x 256 (n x n) field on [0, 1]^2 with a few dozen critical points."""
+    """An n x n field on [0, 1]^2 with a few hundred critical points."""
     from course_lib.scivis.topology import gridded_field
 
     axis = np.linspace(0.0, 1.0, n)
     x, y = np.meshgrid(axis, axis)
-    u = np.sin(9 * x + 1) * np.cos(7 * y) + 0.2 * np.sin(5 * y)
-    v = np.cos(8 * x) * np.sin(10 * y + 0.5) - 0.1 * x
+    u = np.sin(60 * x + 1) * np.cos(47 * y) + 0.2 * np.sin(5 * y)
+    v = np.cos(53 * x) * np.sin(61 * y + 0.5) - 0.1 * x
     return gridded_field(u, v, axis[1] - axis[0], (0.0, 0.0)), axis
 
 

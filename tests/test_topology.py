@@ -266,3 +266,51 @@ def test_errors():
         bilinear_velocity(np.zeros((2, 2)), np.zeros((2, 2)), [0.0, 1.0], 0.0)
     with pytest.raises(ValueError, match="name"):
         preset_field("tornado")
+
+
+def test_gridded_streamline_converges_to_the_analytic_one_as_the_grid_refines():
+    def analytic(t, p):                         # the oscillator of preset "saddle and two foci"
+        return [p[1], p[0] - p[0] ** 3 - 0.5 * p[1]]
+
+    seed, h, n = np.array([-0.5, 1.45]), 0.01, 400
+    ref = solve_ivp(analytic, (0, n * h), seed, rtol=1e-11, atol=1e-12).y[:, -1]
+    errors = []
+    for size in (9, 17, 33, 65):
+        f = preset_field("saddle and two foci", 1.0, 0.5, n=size)
+        errors.append(np.linalg.norm(integrate_gridded(f, seed, h, n)[-1] - ref))
+    assert all(b < a for a, b in zip(errors, errors[1:]))
+    assert errors[-1] < 0.05 * errors[0]
+
+
+def test_critical_points_match_newton_per_cell():
+    """scipy.optimize.fsolve on every candidate cell's bilinear pair finds the same zeros."""
+    from scipy.optimize import fsolve
+
+    axis = np.linspace(0.0, 1.0, 48)
+    x, y = np.meshgrid(axis, axis)
+    u = np.sin(20 * x + 1) * np.cos(15 * y) + 0.2 * np.sin(5 * y)
+    v = np.cos(17 * x) * np.sin(19 * y + 0.5) - 0.1 * x
+    f = gridded_field(u, v, axis[1] - axis[0], (0.0, 0.0))
+    ours = np.array([c.position for c in critical_points(f)])
+    g, h, found = f.values, axis[1] - axis[0], []
+    for j in range(len(axis) - 1):
+        for i in range(len(axis) - 1):
+            c = [g[j, i], g[j, i + 1], g[j + 1, i], g[j + 1, i + 1]]
+            if (np.min(c, axis=0) > 0).any() or (np.max(c, axis=0) < 0).any():
+                continue                       # a component keeps its sign: no zero here
+
+            def residual(st):
+                s, t = st
+                return ((1 - s) * (1 - t) * c[0] + s * (1 - t) * c[1] + (1 - s) * t * c[2]
+                        + s * t * c[3])
+            for start in ([0.5, 0.5], [0.1, 0.1], [0.9, 0.9], [0.1, 0.9], [0.9, 0.1]):
+                st, _, ok, _ = fsolve(residual, start, full_output=True, xtol=1e-13)
+                if ok == 1 and (st > -1e-9).all() and (st < 1 + 1e-9).all() and \
+                        np.abs(residual(st)).max() < 1e-10:
+                    p = [axis[i] + h * st[0], axis[j] + h * st[1]]
+                    if not any(np.hypot(*(np.subtract(p, q))) < 1e-7 for q in found):
+                        found.append(p)
+    found = np.array(found)
+    assert len(ours) == len(found) > 20
+    dist = np.linalg.norm(ours[:, None] - found[None], axis=-1)
+    assert dist.min(axis=1).max() < 1e-8 and dist.min(axis=0).max() < 1e-8
