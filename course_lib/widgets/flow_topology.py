@@ -215,7 +215,7 @@ class FlowTopologyExplorer(Explorer):
         self.state = state or State()
         self.state.seed = np.asarray(self.state.seed, dtype=float).reshape(2)
         self.fig = draw.figure(figsize=(6.4, 3.6))
-        grid = self.fig.add_gridspec(1, 2, width_ratios=(2.2, 1.0), left=0.08, right=0.98,
+        grid = self.fig.add_gridspec(1, 2, width_ratios=(2.2, 1.0), left=0.1, right=0.98,
                                      bottom=0.13, top=0.9, wspace=0.3)
         ax = self.fig.add_subplot(grid[0, 0])
         self.ax = ax
