@@ -1443,3 +1443,38 @@ def test_fact_ch18_unsteady():
     ref = lic(u, v, kernel_length=6, seed=3)
     assert np.allclose(lic(-u, -v, kernel_length=6, seed=3), ref)
     assert np.allclose(lic(2.5 * u, 2.5 * v, kernel_length=6, seed=3), ref)
+
+
+def test_fact_ch18_topology():
+    from scipy.integrate import solve_ivp
+    from course_lib.scivis.topology import (critical_points, gridded_field, integrate_gridded,
+                                            separatrices)
+    # a negative determinant always gives real eigenvalues of opposite signs (a saddle)
+    assert answer_text("ch18-topology-det-negative").startswith("A saddle")
+    for _ in range(500):
+        j = RNG.normal(size=(2, 2))
+        lam = np.linalg.eigvals(j)
+        if np.linalg.det(j) < 0:
+            assert np.all(np.isreal(lam)) and lam.real.min() < 0 < lam.real.max()
+    # a centre is not robust: a tiny change of the trace makes the orbit spiral
+    assert truth("ch18-topology-centre-grid") is False
+
+    def radius_after(trace):
+        a = np.array([[trace / 2, -1.0], [1.0, trace / 2]])
+        sol = solve_ivp(lambda t, y: a @ y, (0, 4 * np.pi), [1.0, 0.0], rtol=1e-10, atol=1e-12)
+        return np.linalg.norm(sol.y[:, -1])
+    assert math.isclose(radius_after(0.0), 1.0, rel_tol=1e-6)
+    assert radius_after(0.01) > 1.05 and radius_after(-0.01) < 0.95
+    # separatrices: forward along the unstable eigenvector, backward along the stable one
+    assert "backward" in answer_text("ch18-topology-separatrix")
+    axis = np.linspace(-1, 1, 21)
+    x, y = np.meshgrid(axis, axis)
+    f = gridded_field(x + 2 * y, 0.5 * x - y, axis[1] - axis[0], (-1.0, -1.0))
+    (saddle,) = critical_points(f)
+    lam, vec = np.linalg.eig(np.array([[1.0, 2.0], [0.5, -1.0]]))
+    e_s = vec[:, np.argmin(lam)]
+    seed = saddle.position + 0.01 * e_s
+    forward = integrate_gridded(f, seed, 0.01, 300)          # runs back into the saddle
+    assert np.linalg.norm(forward[-1] - saddle.position) < 0.01
+    sep = separatrices(f, saddle, n=2000)["stable"][0]
+    assert np.linalg.norm(sep[-1] - saddle.position) > 0.5   # traced backward: goes out

@@ -69,3 +69,8 @@ from ._ch18.unsteady import FlowLineKind, LICPixel, PathlineEulerSteps  # noqa: 
 
 __all__ += ["FlowLineKind", "LICPixel", "PathlineEulerSteps"]
 EXERCISES += (FlowLineKind, PathlineEulerSteps, LICPixel)
+# --- vector-field topology (course_lib/exercises/_ch18/topology.py) ---
+from ._ch18.topology import ClassifyCriticalPoint, GriddedFieldStep  # noqa: E402
+
+__all__ += ["ClassifyCriticalPoint", "GriddedFieldStep"]
+EXERCISES += (ClassifyCriticalPoint, GriddedFieldStep)

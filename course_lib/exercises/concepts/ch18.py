@@ -124,4 +124,36 @@ QUESTIONS = [
         "phase, arrows, colour).",
         "It is true: v and -v (or 2v) give the same picture, as only the streamline through "
         "each pixel matters."),
+    # --- vector-field topology ---
+    _mc(18, "ch18-topology-det-negative",
+        "At a critical point of a 2D vector field the Jacobian has a negative determinant. "
+        "What kind of point is it?",
+        ("A saddle: the eigenvalues are real with opposite signs",
+         "Their product is the determinant; a negative product needs one positive and one "
+         "negative real eigenvalue, whatever the trace."),
+        ("An attracting node", "A node has eigenvalues of one sign, so a positive determinant."),
+        ("A focus", "A focus has a complex pair, whose product $|\\lambda|^2$ is positive."),
+        ("It depends on the sign of the trace", "Only when the determinant is positive: then the "
+         "trace decides attracting or repelling."),
+        correct=0),
+    _tf(18, "ch18-topology-centre-grid",
+        "A centre found in a sampled (gridded) field is a robust result: small errors in the "
+        "samples keep it a centre.", False,
+        "A centre needs a trace of exactly 0; any small perturbation makes the real part of "
+        "the eigenvalues non-zero and turns it into a weak focus, attracting or repelling.",
+        "Right: the centre is the one class that sits on a boundary (trace 0) of the "
+        "trace-determinant plane, so noise moves it into a focus."),
+    _mc(18, "ch18-topology-separatrix",
+        "How are the separatrices of a saddle traced?",
+        ("Forward from the saddle itself", "The velocity is zero there: the line never "
+         "starts."),
+        ("Along the gradient of the speed", "Separatrices are streamlines, tangent to the "
+         "velocity, not to a gradient."),
+        ("Forward from seeds a small step along the eigenvector of the positive eigenvalue, "
+         "backward from seeds along the eigenvector of the negative one",
+         "The flow leaves along the unstable eigenvector and arrives along the stable one; "
+         "integrating backward follows the arriving curves out of the saddle."),
+        ("Forward along both eigenvectors", "Along the stable eigenvector the forward flow "
+         "runs back into the saddle: those two curves must be traced backward."),
+        correct=2),
 ]
