@@ -65,3 +65,9 @@ EXERCISES = (
     RayTreeCount,
     BVHSavings,
 )
+
+# Spatial subdivision (lesson section "Spatial subdivision: grids, octrees and kd-trees")
+from ._ch15.spatial import GridDDACells, QuadtreeRayCells  # noqa: E402
+
+__all__ += ["GridDDACells", "QuadtreeRayCells"]
+EXERCISES = EXERCISES + (GridDDACells, QuadtreeRayCells)
