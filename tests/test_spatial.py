@@ -231,3 +231,21 @@ def test_errors():
         grid.traverse([[0, 0, 1], [0, 0, 2]], [0, 0, -1])
     with pytest.raises(ValueError, match="structures"):
         compare_structures(v, f, [[0, 0, 1]], [0, 0, -1], ("quadtree",))
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_walk_is_the_start_of_the_traversal_and_gives_the_hit(seed):
+    v, f = soup(seed, 60)
+    o, d = rays(seed, 30)
+    for name, build in builders():
+        s = build(v, f)
+        hits = s.intersect(o, d)
+        for r in range(len(o)):
+            w = s.walk(o[r], d[r])
+            cells = s.traverse(o[r], d[r])[0]
+            assert w.cells == cells[:len(w.cells)]
+            assert w.t == hits.t[r] and w.id == hits.ids[r]
+            tested = np.concatenate(w.tested) if w.tested else np.zeros(0, int)
+            assert len(set(tested.tolist())) == len(tested)      # mailboxing: once each
+            if w.id >= 0:
+                assert w.id in tested

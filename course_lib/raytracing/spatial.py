@@ -42,7 +42,7 @@ import numpy as np
 from .._raycore import (BVH, as_rays, moller_trumbore, slab, triangle_soa)
 from .._validate import as_mesh, as_positive, as_whole
 
-__all__ = ["KDTree", "Octree", "SpatialHits", "StructureRow", "UniformGrid",
+__all__ = ["KDTree", "Octree", "RayWalk", "SpatialHits", "StructureRow", "UniformGrid",
            "compare_structures"]
 
 
@@ -169,28 +169,96 @@ class _SpatialBase:
         stamp = np.full(m, -1, dtype=np.intp)        # the mailboxes: last ray that tested it
         tests = cells = nodes = 0
         for r in range(p):
-            best_t, best_id = np.inf, -1
-            o_r, d_r = o[r], d[r]
-            walk = self._cells(o_r, d_r)
-            for _, t_in, t_out, ids in walk:
-                cells += 1
-                if mailbox:
-                    ids = ids[stamp[ids] != r]
-                    stamp[ids] = r
-                if len(ids):
-                    tests += len(ids)
-                    t, _, _ = moller_trumbore(o_r, d_r, self._soa[:, ids])
-                    t = np.where(t >= 0, t, np.inf)
-                    k = int(np.argmin(t))          # first among equal t; ids are ascending
-                    tk, ik = float(t[k]), int(ids[k])
-                    if tk < best_t or (tk == best_t and ik < best_id and tk < np.inf):
-                        best_t, best_id = tk, ik
-                if best_t <= t_out:                  # the hit lies in this cell: done
-                    break
+            t_best[r], id_best[r], walked, tested = self._walk(o[r], d[r], stamp, r, mailbox)
+            cells += len(walked)
+            tests += sum(len(ids) for ids in tested)
             nodes += self._last_nodes
-            t_best[r], id_best[r] = best_t, best_id
         return SpatialHits(t_best.reshape(lead), id_best.reshape(lead), int(tests), int(cells),
                            int(nodes))
+
+    def _walk(self, o_r, d_r, stamp, r, mailbox):
+        """One ray: (t, id, the cells (cell, t_in, t_out) looked into, the triangles tested in
+        each)."""
+        best_t, best_id = np.inf, -1
+        walked, tested = [], []
+        for cell, t_in, t_out, ids in self._cells(o_r, d_r):
+            if mailbox:
+                ids = ids[stamp[ids] != r]
+                stamp[ids] = r
+            walked.append((cell, t_in, t_out))
+            tested.append(ids)
+            if len(ids):
+                t, _, _ = moller_trumbore(o_r, d_r, self._soa[:, ids])
+                t = np.where(t >= 0, t, np.inf)
+                k = int(np.argmin(t))              # first among equal t; ids are ascending
+                tk, ik = float(t[k]), int(ids[k])
+                if tk < best_t or (tk == best_t and ik < best_id and tk < np.inf):
+                    best_t, best_id = tk, ik
+            if best_t <= t_out:                      # the hit lies in this cell: done
+                break
+        return best_t, best_id, walked, tested
+
+    def walk(self, origin, direction, mailbox=True):
+        """What :meth:`intersect` does for one ray, step by step (for drawings and lessons).
+
+        Parameters
+        ----------
+        origin, direction : array_like, shape (3,)
+        mailbox : bool, optional
+
+        Returns
+        -------
+        RayWalk
+
+        Examples
+        --------
+        >>> v = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 2], [1, 0, 2], [0, 1, 2]]
+        >>> w = UniformGrid(v, [[0, 1, 2], [3, 4, 5]], resolution=[1, 1, 4]).walk(
+        ...     [0.2, 0.2, 5], [0, 0, -1])
+        >>> w.cells, [ids.tolist() for ids in w.tested], w.t, w.id
+        ([(0, 0, 3)], [[1]], 3.0, 1)
+        """
+        o, d, _ = as_rays(origin, direction)
+        if len(o) != 1:
+            raise ValueError(f"walk takes one ray (origin and direction of shape (3,)), got "
+                             f"{len(o)} rays")
+        stamp = np.full(len(self.triangles), -1, dtype=np.intp)
+        t, i, walked, tested = self._walk(o[0], d[0], stamp, 0, mailbox)
+        return RayWalk([c for c, _, _ in walked], np.array([a for _, a, _ in walked]),
+                       np.array([b for _, _, b in walked]), tested, float(t), int(i),
+                       self._last_nodes)
+
+
+class RayWalk(NamedTuple):
+    """One ray's walk through a spatial structure (:meth:`UniformGrid.walk` and the trees').
+
+    Attributes
+    ----------
+    cells : list
+        The cells looked into, in order ((i, j, k) for the grid, leaf numbers for the trees).
+    t_enter, t_exit : ndarray
+        Where the ray enters and leaves each of them.
+    tested : list of ndarray
+        The triangles tested in each cell (after mailboxing).
+    t : float
+        The nearest hit (``inf``: none).
+    id : int
+        Its triangle (-1: none).
+    nodes_visited : int
+        Tree nodes visited (the grid: cells).
+
+    Examples
+    --------
+    >>> RayWalk([], np.zeros(0), np.zeros(0), [], np.inf, -1, 0).id
+    -1
+    """
+    cells: list
+    t_enter: np.ndarray
+    t_exit: np.ndarray
+    tested: list
+    t: float
+    id: int
+    nodes_visited: int
 
 
 # ---------------------------------------------------------------------------------------------
