@@ -249,3 +249,22 @@ def test_walk_is_the_start_of_the_traversal_and_gives_the_hit(seed):
             assert len(set(tested.tolist())) == len(tested)      # mailboxing: once each
             if w.id >= 0:
                 assert w.id in tested
+
+
+def test_a_quadtree_octree_halves_two_axes_and_still_finds_the_hits():
+    v, f = soup(4, 60)
+    tree = Octree(v, f, max_depth=5, leaf_size=2, axes=(0, 1))
+    inner = tree.children[:, 0] >= 0
+    assert tree.children.shape[1] == 4
+    kids = tree.children[0]
+    assert np.allclose(tree.node_lo[kids, 2], tree.lo[2])           # z is never split
+    assert np.allclose(tree.node_hi[kids, 2], tree.hi[2])
+    assert inner.any()
+    o, d = rays(4, 50)
+    ref = brute_force(o, d, triangle_soa(v[f]), 0.0, np.full(len(o), np.inf))
+    h = tree.intersect(o, d)
+    assert np.array_equal(h.t, ref[0]) and np.array_equal(h.ids, ref[1])
+    with pytest.raises(ValueError, match="axes"):
+        Octree(v, f, axes=(0, 3))
+    with pytest.raises(ValueError, match="axes"):
+        Octree(v, f, axes=())

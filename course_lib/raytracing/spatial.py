@@ -411,12 +411,15 @@ class Octree(_SpatialBase):
         The deepest level (0: the root is the only cell).
     leaf_size : int, optional
         A node with at most this many triangles is not split.
+    axes : sequence of int, optional
+        The axes halved at each level: all three (an octree, 8 children), or two (a quadtree
+        in that plane, 4 children; the explorer's top view uses (0, 1)).
 
     Attributes
     ----------
     node_lo, node_hi : ndarray, shape (nodes, 3)
         The nodes' boxes.
-    children : ndarray of int, shape (nodes, 8)
+    children : ndarray of int, shape (nodes, 8) (2 ** len(axes) in general)
         The children's node numbers (child ``4x + 2y + z`` is the upper half along x when
         ``x = 1``, ...); -1 for a leaf.
     depth : int
@@ -424,7 +427,7 @@ class Octree(_SpatialBase):
     Raises
     ------
     ValueError
-        For max_depth < 0, leaf_size < 1, or an empty/degenerate mesh.
+        For max_depth < 0, leaf_size < 1, bad axes, or an empty/degenerate mesh.
 
     Examples
     --------
@@ -434,9 +437,19 @@ class Octree(_SpatialBase):
     (9, 1)
     """
 
-    def __init__(self, vertices, faces, max_depth=8, leaf_size=8):
+    def __init__(self, vertices, faces, max_depth=8, leaf_size=8, axes=(0, 1, 2)):
         super().__init__(vertices, faces)
         self.max_depth = _sp_depth(max_depth)
+        try:
+            axes = sorted({int(a) for a in axes})
+        except (TypeError, ValueError):
+            axes = []
+        if not axes or not set(axes) <= {0, 1, 2}:
+            raise ValueError("axes must be a non-empty subset of (0, 1, 2) (the axes halved at "
+                             "each level)")
+        self.axes = tuple(axes)
+        n_kids = 2 ** len(axes)
+        split_axis = np.isin(np.arange(3), self.axes)
         self.leaf_size = as_whole(leaf_size, "leaf_size", 1)
         lo_list, hi_list, kids, tri_list = [self.lo], [self.hi], [None], [np.arange(
             len(self.triangles))]
@@ -448,10 +461,12 @@ class Octree(_SpatialBase):
                 if len(ids) <= self.leaf_size:
                     continue
                 lo, hi = lo_list[n], hi_list[n]
-                mid = (lo + hi) / 2
+                mid = np.where(split_axis, (lo + hi) / 2, hi)     # unsplit axes: whole
                 kids[n] = []
-                for c in range(8):
-                    bits = np.array([(c >> 2) & 1, (c >> 1) & 1, c & 1], dtype=bool)
+                for c in range(n_kids):
+                    bits = np.zeros(3, dtype=bool)
+                    for b, a in enumerate(self.axes[::-1]):
+                        bits[a] = (c >> b) & 1
                     clo, chi = np.where(bits, mid, lo), np.where(bits, hi, mid)
                     inside = np.all((self._tri_lo[ids] <= chi) & (self._tri_hi[ids] >= clo),
                                     axis=1)
@@ -467,7 +482,7 @@ class Octree(_SpatialBase):
             frontier = nxt
         self.depth = depth
         self.node_lo, self.node_hi = np.array(lo_list), np.array(hi_list)
-        self.children = np.array([k if k is not None else [-1] * 8 for k in kids], dtype=np.intp)
+        self.children = np.array([k if k is not None else [-1] * n_kids for k in kids], dtype=np.intp)
         self._tris_of = tri_list
         self._last_nodes = 0
 
