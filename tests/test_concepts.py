@@ -1478,3 +1478,57 @@ def test_fact_ch18_topology():
     assert np.linalg.norm(forward[-1] - saddle.position) < 0.01
     sep = separatrices(f, saddle, n=2000)["stable"][0]
     assert np.linalg.norm(sep[-1] - saddle.position) > 0.5   # traced backward: goes out
+
+
+def test_fact_ch15_spatial():
+    """Spatial subdivision: the teapot in a stadium, object vs space subdivision, mailboxing and
+    the early exit, checked on meshes with course_lib.raytracing.spatial against brute force."""
+    import trimesh
+    from course_lib._raycore import BVH, brute_force, triangle_soa
+    from course_lib.raytracing.spatial import Octree, UniformGrid
+
+    rng = np.random.default_rng(1522)
+    # the teapot in a stadium: a fine sphere of radius 0.5 and a stadium floor 1000 wide
+    ball = trimesh.creation.icosphere(4, radius=0.5)
+    floor = np.array([[-500, -500, -2], [500, -500, -2], [500, 500, -2], [-500, 500, -2],
+                      [-500, -500, 300.0]])
+    v = np.vstack([ball.vertices, floor])
+    k = len(ball.vertices)
+    f = np.vstack([ball.faces, [[k, k + 1, k + 2], [k, k + 2, k + 3], [k, k + 1, k + 4]]])
+    o = np.tile([0.0, 0.0, 5.0], (30, 1))
+    d = np.column_stack([rng.uniform(-0.05, 0.05, (30, 2)), -np.ones(30)])
+    ref = brute_force(o, d, triangle_soa(v[f]), 0.0, np.full(30, np.inf))
+    grid, tree = UniformGrid(v, f), Octree(v, f, max_depth=12, leaf_size=8)
+    g, t = grid.intersect(o, d), tree.intersect(o, d)
+    assert np.array_equal(g.ids, ref[1]) and np.array_equal(t.ids, ref[1])
+    assert not truth("ch15-teapot-stadium")
+    assert g.triangle_tests > 10 * t.triangle_tests        # the grid's crowded cell
+    # object vs space subdivision: a BVH lists each triangle once; a grid duplicates
+    assert answer_text("ch15-object-vs-space").startswith("Space subdivision cuts space")
+    mesh = trimesh.creation.torus(1.0, 0.3)
+    leaves = BVH(mesh.vertices[mesh.faces], leaf_size=4).leaves
+    listed = np.concatenate(leaves)
+    assert np.array_equal(np.sort(listed), np.arange(len(mesh.faces)))
+    assert UniformGrid(mesh.vertices, mesh.faces).references > len(mesh.faces)
+    # mailboxing: same hits, fewer tests
+    assert answer_text("ch15-mailboxing").startswith("It remembers")
+    o = rng.normal(size=(100, 3)) * 3
+    d = -o + rng.normal(size=(100, 3))
+    a = UniformGrid(mesh.vertices, mesh.faces).intersect(o, d)
+    b = UniformGrid(mesh.vertices, mesh.faces).intersect(o, d, mailbox=False)
+    assert np.array_equal(a.ids, b.ids) and a.triangle_tests < b.triangle_tests
+    # the early exit: a long triangle listed in the first cell is hit beyond it, a small one
+    # in the second cell nearer; accepting the first hit found would be wrong
+    assert not truth("ch15-grid-early-exit")
+    v = [[0.2, -1, -1], [0.2, 1, -1], [3.9, 0, 1],              # slanted, from x=0.2 to 3.9
+         [1.5, -1, -1], [1.5, 1, -1], [1.5, 0, 1]]               # a wall at x = 1.5
+    grid = UniformGrid(v, [[0, 1, 2], [3, 4, 5]], resolution=[4, 1, 1])
+    o, d = np.array([[0.0, 0, 0]]), np.array([[1.0, 0, 0]])
+    cells, t_in, t_out = grid.traverse(o[0], d[0])
+    first = grid.cell_triangles(cells[0])
+    assert first.tolist() == [0]
+    t0 = (0.2 + 3.7 / 2)                                         # the slanted one at z = 0
+    assert t0 > t_out[0]                                         # hit beyond the first cell
+    assert grid.intersect(o, d).ids.tolist() == [1]              # the wall at t = 1.5 is nearer
+    assert brute_force(o, d, triangle_soa(np.array(v)[[[0, 1, 2], [3, 4, 5]]]), 0.0,
+                       np.array([np.inf]))[1].tolist() == [1]

@@ -76,3 +76,8 @@ from ._ch15.quadrics import RayCylinderHit, RayDiskHit  # noqa: E402
 
 __all__ += ["RayCylinderHit", "RayDiskHit"]
 EXERCISES += (RayCylinderHit, RayDiskHit)
+# Spatial subdivision (lesson section "Spatial subdivision: grids, octrees and kd-trees")
+from ._ch15.spatial import GridDDACells, QuadtreeRayCells  # noqa: E402
+
+__all__ += ["GridDDACells", "QuadtreeRayCells"]
+EXERCISES = EXERCISES + (GridDDACells, QuadtreeRayCells)

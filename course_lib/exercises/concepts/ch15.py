@@ -146,4 +146,53 @@ QUESTIONS = [
         "tangent touch never changes sign: both are missed. The step must be smaller than the "
         "thinnest feature (or bounded by a Lipschitz constant, as in sphere tracing).",
         "Right: sampling can miss thin parts and grazing touches."),
+    # Spatial subdivision (lesson section "Spatial subdivision: grids, octrees and kd-trees")
+    _tf(15, "ch15-teapot-stadium",
+        "A uniform grid copes well with a small, finely tessellated object in a huge, mostly "
+        "empty scene (the 'teapot in a stadium'), because the number of cells follows the "
+        "number of triangles.", False,
+        "The cells are all the same size, chosen for the whole stadium: the teapot ends up in "
+        "one or a few cells holding all its triangles, and a ray through it tests them all. "
+        "Octrees and kd-trees adapt: they subdivide only where the triangles are.",
+        "Right: a grid's resolution is the same everywhere, so a dense object in a large empty "
+        "scene falls into a handful of crowded cells; adaptive structures (octree, kd-tree, "
+        "BVH) subdivide where the geometry is."),
+    _mc(15, "ch15-object-vs-space",
+        "How does space subdivision (grid, octree, kd-tree) differ from object subdivision "
+        "(a BVH)?",
+        ("Space subdivision cuts space into cells that do not overlap, so a triangle crossing a "
+         "cell wall is listed in several cells; a BVH puts each triangle in exactly one leaf, "
+         "but sibling boxes may overlap",
+         "That is the trade-off: ordered, disjoint cells (a ray can stop at the first cell "
+         "holding a hit) against duplicated references, versus no duplicates but overlapping "
+         "boxes a ray may have to look into both."),
+        ("Space subdivision never tests a triangle twice for the same ray, even without "
+         "mailboxing", "A triangle listed in several cells is met again in each of them: "
+         "mailboxing exists to skip those repeated tests."),
+        ("A BVH's boxes never overlap", "Sibling boxes of a BVH can overlap: they bound "
+         "groups of objects, not disjoint regions of space."),
+        ("Only a BVH can skip the empty parts of space", "Empty grid cells and empty tree "
+         "leaves are skipped just as cheaply (no triangle to test)."),
+        correct=0),
+    _mc(15, "ch15-mailboxing",
+        "What does mailboxing do in a grid or a kd-tree traversal?",
+        ("It remembers, per triangle, the last ray tested against it, so that a triangle listed "
+         "in several cells is tested only once per ray", "It saves repeated tests and never "
+         "changes the hit found."),
+        ("It stores the nearest hit of each cell so that rays need no triangle tests",
+         "Hits depend on the ray: nothing per cell can replace the tests."),
+        ("It sends the rays that hit the same cell together as a packet", "That is ray "
+         "packeting, a different optimization."),
+        ("It stops the traversal at the first triangle hit", "The first triangle hit is not "
+         "necessarily the nearest: the walk stops only when the nearest hit so far lies inside "
+         "the current cell."),
+        correct=0),
+    _tf(15, "ch15-grid-early-exit",
+        "In a uniform grid, the first hit found while testing the triangles of a cell may be "
+        "accepted at once, since the cells are visited front to back.", False,
+        "A triangle listed in this cell may stick out of it and be hit beyond it, while a "
+        "triangle in the next cell is hit earlier. The walk stops only when the nearest hit so "
+        "far is no farther than where the ray leaves the current cell.",
+        "Right: the hit must lie inside the current cell (t no larger than the cell's exit "
+        "parameter) before the walk may stop."),
 ]
