@@ -5,7 +5,10 @@ triangle (the ray parameter and the barycentric coordinates, as in Möller-Trumb
 direction of an incoming ray; the refracted direction by Snell's law; the critical angle of total
 internal reflection; Schlick's Fresnel reflectance; whether a shadow ray is blocked and what the
 point's intensity is then; the colour a chain of mirror bounces gives a pixel; how many rays a
-pixel's ray tree holds; and what a bounding volume hierarchy saves. The ``seed`` draws numbers
+pixel's ray tree holds; what a bounding volume hierarchy saves; a ray against an open cylinder
+and against disks (quadrics); the cells a 3D-DDA and a quadtree visit (spatial subdivision);
+and what distributed ray tracing spreads its rays over, with a soft shadow's share of the light.
+The ``seed`` draws numbers
 that work out by hand: whole-number points, unit vectors with rational components such as
 :math:`(\tfrac23, \tfrac23, \tfrac13)` or :math:`(0.6, 0.8, 0)`, barycentric coordinates in
 eighths, angles of refraction that are multiples of 15 degrees, refractive indices of real
@@ -38,11 +41,20 @@ from ._ch15.reflection_refraction import (CriticalAngle, ReflectedRay, Refracted
 from ._ch15.ray_trees import MirrorChainColour, RayTreeCount, ShadowRay
 from ._ch15.acceleration import BVHSavings
 
+from ._ch15.quadrics import RayCylinderHit, RayDiskHit
+from ._ch15.spatial import GridDDACells, QuadtreeRayCells
+from ._ch15.distributed import DistributedDomainChoice, SoftShadowShare
+
 __all__ = [
     "EXERCISES",
     "BVHSavings",
     "CriticalAngle",
+    "DistributedDomainChoice",
+    "GridDDACells",
     "MirrorChainColour",
+    "QuadtreeRayCells",
+    "RayCylinderHit",
+    "RayDiskHit",
     "RaySphereHit",
     "RayTreeCount",
     "RayTriangleHit",
@@ -50,6 +62,7 @@ __all__ = [
     "RefractedRay",
     "SchlickReflectance",
     "ShadowRay",
+    "SoftShadowShare",
 ]
 
 #: The exercises of chapter 15, in the order of the solutions notebook.
@@ -64,20 +77,10 @@ EXERCISES = (
     MirrorChainColour,
     RayTreeCount,
     BVHSavings,
+    RayCylinderHit,
+    RayDiskHit,
+    GridDDACells,
+    QuadtreeRayCells,
+    DistributedDomainChoice,
+    SoftShadowShare,
 )
-
-# Distributed ray tracing (issue 22)
-from ._ch15.distributed import DistributedDomainChoice, SoftShadowShare  # noqa: E402
-
-__all__ += ["DistributedDomainChoice", "SoftShadowShare"]
-EXERCISES = EXERCISES + (DistributedDomainChoice, SoftShadowShare)
-# Quadrics and implicit surfaces: a finite open cylinder, two disks
-from ._ch15.quadrics import RayCylinderHit, RayDiskHit  # noqa: E402
-
-__all__ += ["RayCylinderHit", "RayDiskHit"]
-EXERCISES += (RayCylinderHit, RayDiskHit)
-# Spatial subdivision (lesson section "Spatial subdivision: grids, octrees and kd-trees")
-from ._ch15.spatial import GridDDACells, QuadtreeRayCells  # noqa: E402
-
-__all__ += ["GridDDACells", "QuadtreeRayCells"]
-EXERCISES = EXERCISES + (GridDDACells, QuadtreeRayCells)
