@@ -64,6 +64,9 @@ class State:
     col: int = 48
 
 
+_NO_SHAPE = ("sphere", "cylinder", "disk")
+
+
 def _matrix(state):
     r, s = float(state.radius), float(state.shape)
     if state.kind == "ellipsoid":
@@ -206,12 +209,19 @@ class QuadricExplorer(Explorer):
                                       w.VBox([self.height, self.row, self.col])],
                                      layout=w.Layout(flex_flow="row wrap")),
                               self.info])
+        self._enable()
         self._draw(s)
 
     def update(self):
         """Recompute the picture (the camera's rays are cached) and update the artists."""
+        self._enable()
         self._draw(scene(self.state))
         self.blitter.update()
+
+    def _enable(self):
+        # a sphere, a cylinder and a disk have no second shape parameter; a disk is not cut
+        self.shape.disabled = self.state.kind in _NO_SHAPE
+        self.height.disabled = self.state.kind == "disk"
 
     def _draw(self, s):
         self.image.set_data(s["image"])
