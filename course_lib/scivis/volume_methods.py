@@ -234,7 +234,7 @@ def classify(volume, transfer="ramp"):
 # Shared: geometry and the compositing of layers
 # ---------------------------------------------------------------------------------------------
 
-def _volume_setup(volume, spacing, origin, rotation, image_size, extent):
+def _vm_setup(volume, spacing, origin, rotation, image_size, extent):
     v = _grid(volume, "volume", 3)
     sp = _spacing(spacing, 3)
     org = as_vector(origin, "origin", 3)
@@ -243,11 +243,11 @@ def _volume_setup(volume, spacing, origin, rotation, image_size, extent):
     return v, sp, org, lo, hi, centre, radius, rot, u.ravel(), w.ravel(), size
 
 
-def _unit(unit_length, sp):
+def _vm_unit(unit_length, sp):
     return float(sp.min()) if unit_length is None else as_positive(unit_length, "unit_length")
 
 
-def _operators(order, operator):
+def _vm_operator(order, operator):
     as_choice(order, "order", ("front-to-back", "back-to-front"))
     natural = "under" if order == "front-to-back" else "over"
     if operator is None:
@@ -255,7 +255,7 @@ def _operators(order, operator):
     return as_choice(operator, "operator", ("over", "under"))
 
 
-def _layer(state, color, alpha, operator):
+def _vm_layer(state, color, alpha, operator):
     """Composite one layer (premultiplied colour `color`, opacity `alpha`) into `state`."""
     C, A = state
     if operator == "under":                      # the new layer lies behind what is there
@@ -263,16 +263,16 @@ def _layer(state, color, alpha, operator):
     return color + (1.0 - alpha)[:, None] * C, alpha + (1.0 - alpha) * A   # in front
 
 
-class _Image(NamedTuple):
+class _VmImage(NamedTuple):
     rgb: np.ndarray
     alpha: np.ndarray
     layers: int
 
 
-def _finish(C, A, background, size):
+def _vm_finish(C, A, background, size):
     bg = as_vector(background, "background", 3)
     rgb = C + (1.0 - A)[:, None] * bg
-    return _Image(rgb.reshape(size[0], size[1], 3), A.reshape(size), 0)
+    return _VmImage(rgb.reshape(size[0], size[1], 3), A.reshape(size), 0)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -354,12 +354,12 @@ def slice_render(volume, transfer="ramp", rotation=None, image_size=None, slice_
     view 0.125
     axis 0.125
     """
-    v, sp, org, lo, hi, centre, radius, rot, u, w, size = _volume_setup(
+    v, sp, org, lo, hi, centre, radius, rot, u, w, size = _vm_setup(
         volume, spacing, origin, rotation, image_size, extent)
     as_choice(slices, "slices", ("view", "axis"))
     as_choice(classification, "classification", ("post", "pre"))
     tf = _rgba_transfer(transfer, v)
-    unit = _unit(unit_length, sp)
+    unit = _vm_unit(unit_length, sp)
     step = 0.5 * float(sp.min()) if slice_spacing is None else as_positive(slice_spacing,
                                                                            "slice_spacing")
     dims = v.shape[::-1]
@@ -413,8 +413,8 @@ def slice_render(volume, transfer="ramp", rotation=None, image_size=None, slice_
         a = 1.0 - (1.0 - np.clip(alpha, 0.0, 1.0)) ** (delta / unit)
         full_c, full_a = np.zeros((len(u), 3)), np.zeros(len(u))
         full_c[inside], full_a[inside] = a[:, None] * color, a
-        C, A = _layer((C, A), full_c, full_a, "under")
-    return _finish(C, A, background, size)._replace(layers=len(planes))
+        C, A = _vm_layer((C, A), full_c, full_a, "under")
+    return _vm_finish(C, A, background, size)._replace(layers=len(planes))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -487,11 +487,11 @@ def splat_render(volume, transfer="ramp", rotation=None, image_size=None, kernel
     >>> int(np.argmax(a)), bool(np.allclose(a, b)), bool(a[2, 2] > a[2, 3] > a[2, 4])
     (12, True, True)
     """
-    v, sp, org, lo, hi, centre, radius, rot, u, w, size = _volume_setup(
+    v, sp, org, lo, hi, centre, radius, rot, u, w, size = _vm_setup(
         volume, spacing, origin, rotation, image_size, extent)
     r = as_positive(kernel_radius, "kernel_radius")
-    op = _operators(order, operator)
-    unit = _unit(unit_length, sp)
+    op = _vm_operator(order, operator)
+    unit = _vm_unit(unit_length, sp)
     thick = float(sp.min()) if sheet_thickness is None else as_positive(sheet_thickness,
                                                                          "sheet_thickness")
     tf = _rgba_transfer(transfer, v)
@@ -502,7 +502,7 @@ def splat_render(volume, transfer="ramp", rotation=None, image_size=None, kernel
     height, width = size
     C, A = np.zeros((height * width, 3)), np.zeros(height * width)
     if len(keep) == 0:
-        return _finish(C, A, background, size)
+        return _vm_finish(C, A, background, size)
     k, j, i = np.unravel_index(keep, v.shape)
     points = org + sp * np.stack([i, j, k], axis=1)
     q = (points - centre) @ rot.T                     # view coordinates (u, v, depth)
@@ -539,8 +539,8 @@ def splat_render(volume, transfer="ramp", rotation=None, image_size=None, kernel
             colors[ids, c, None], ok.shape)[ok], minlength=pixels) for c in range(3)], axis=1)
         a = -np.expm1(-kappa)
         mean_c = tinted / np.where(kappa > 0, kappa, 1.0)[:, None]
-        C, A = _layer((C, A), a[:, None] * mean_c, a, op)
-    return _finish(C, A, background, size)._replace(layers=len(sheets))
+        C, A = _vm_layer((C, A), a[:, None] * mean_c, a, op)
+    return _vm_finish(C, A, background, size)._replace(layers=len(sheets))
 
 
 # ---------------------------------------------------------------------------------------------
