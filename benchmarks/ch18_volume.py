@@ -23,6 +23,8 @@ def _vtk_renderer(values, spacing, size):
         ((values - lo) / (hi - lo)).astype(np.float32).ravel(), deep=True))
     mapper = vtk.vtkFixedPointVolumeRayCastMapper()
     mapper.SetInputData(image)
+    mapper.AutoAdjustSampleDistancesOff()          # else it coarsens the step to hit a frame rate
+    mapper.SetSampleDistance(0.5 * min(spacing))   # the course's default step: half a voxel
     colour, opacity = vtk.vtkColorTransferFunction(), vtk.vtkPiecewiseFunction()
     colour.AddRGBPoint(0.0, 0, 0, 0)
     colour.AddRGBPoint(1.0, 1, 1, 1)
