@@ -1,5 +1,5 @@
-"""Chapter 18, volume rendering beyond ray casting: texture slicing and splatting of a 128^3
-volume against the course's ray casting and against VTK's vtkFixedPointVolumeRayCastMapper
+"""Chapter 18, volume rendering beyond ray casting: texture slicing, splatting and shear-warp
+of a 128^3 volume against the course's ray casting and against VTK's vtkFixedPointVolumeRayCastMapper
 (off screen, EGL; the reference library), the same transfer function and image size; and the
 update of the volume-comparison explorer."""
 import os
@@ -70,6 +70,7 @@ def operations(quick=False):
     ray = lambda: scivis.volume_render(ct.values, "ramp", early_termination=None, **geo)  # noqa: E731
     sl = lambda: scivis.slice_render(ct.values, "ramp", **geo)                          # noqa: E731
     sp = lambda: scivis.splat_render(ct.values, "ramp", **geo)                          # noqa: E731
+    sw = lambda: scivis.shear_warp(ct.values, "ramp", **geo)                            # noqa: E731
     rows = []
     try:
         vtk_render = _vtk_renderer(ct.values, ct.spacing, px)
@@ -86,6 +87,8 @@ def operations(quick=False):
     rows.append(operation_row(f"slicing vs ray casting, {label}", n ** 3, sl, ray,
                               "the course's volume_render (no early termination)", repeat))
     rows.append(operation_row(f"splatting vs ray casting, {label}", n ** 3, sp, ray,
+                              "the course's volume_render (no early termination)", repeat))
+    rows.append(operation_row(f"shear-warp vs ray casting, {label}", n ** 3, sw, ray,
                               "the course's volume_render (no early termination)", repeat))
     return rows
 
