@@ -1,7 +1,7 @@
 """Chapter 18, volume rendering beyond ray casting: texture slicing, splatting and shear-warp
-of a 128^3 volume against the course's ray casting and against VTK's vtkFixedPointVolumeRayCastMapper
-(off screen, EGL; the reference library), the same transfer function and image size; and the
-update of the volume-comparison explorer."""
+of a 128^3 volume against the course's ray casting and against VTK's
+vtkFixedPointVolumeRayCastMapper (off screen, EGL; the reference library), the same transfer
+function, image size and sampling step; and the update of the volume-comparison explorer."""
 import os
 
 import numpy as np
