@@ -67,10 +67,18 @@ def operations(quick=False):
     ct = scivis.example_volume("ct", size=n)
     geo = dict(rotation=scivis.view_rotation(0.5, -0.3), image_size=(px, px),
                spacing=ct.spacing, origin=ct.origin, extent="sphere")
-    ray = lambda: scivis.volume_render(ct.values, "ramp", early_termination=None, **geo)  # noqa: E731
-    sl = lambda: scivis.slice_render(ct.values, "ramp", **geo)                          # noqa: E731
-    sp = lambda: scivis.splat_render(ct.values, "ramp", **geo)                          # noqa: E731
-    sw = lambda: scivis.shear_warp(ct.values, "ramp", **geo)                            # noqa: E731
+    def ray():
+        return scivis.volume_render(ct.values, "ramp", early_termination=None, **geo)
+
+    def sl():
+        return scivis.slice_render(ct.values, "ramp", **geo)
+
+    def sp():
+        return scivis.splat_render(ct.values, "ramp", **geo)
+
+    def sw():
+        return scivis.shear_warp(ct.values, "ramp", **geo)
+
     rows = []
     try:
         vtk_render = _vtk_renderer(ct.values, ct.spacing, px)
