@@ -1532,3 +1532,49 @@ def test_fact_ch15_spatial():
     assert grid.intersect(o, d).ids.tolist() == [1]              # the wall at t = 1.5 is nearer
     assert brute_force(o, d, triangle_soa(np.array(v)[[[0, 1, 2], [3, 4, 5]]]), 0.0,
                        np.array([np.inf]))[1].tolist() == [1]
+
+
+def test_fact_ch18_volume_methods():
+    # the asymptotic decider's example, by sampling the bilinear interpolant densely
+    assert "saddle value" in answer_text("ch18-asymptotic-decider")
+    f0, f1, f2, f3, c = 0.0, 4.0, 0.0, 10.0, 3.0
+    s, t = np.meshgrid(np.linspace(0, 1, 1001), np.linspace(0, 1, 1001))
+    g = f0 * (1 - s) * (1 - t) + f1 * s * (1 - t) + f2 * s * t + f3 * (1 - s) * t
+    from scipy import ndimage
+    mid = (f0 * f2 - f1 * f3) / (f0 + f2 - f1 - f3)
+    assert np.isclose(mid, 40 / 14) and mid < c <= (f0 + f1 + f2 + f3) / 4
+    labels, _ = ndimage.label(g >= c)                # rows t, columns s
+    assert labels[0, -1] != labels[-1, 0]            # corners 1 and 3 are not connected
+    # the saddle value is the interpolant's value where both partial derivatives vanish
+    den = f0 + f2 - f1 - f3
+    s0, t0 = (f0 - f3) / den, (f0 - f1) / den
+    assert np.isclose(f0 * (1 - s0) * (1 - t0) + f1 * s0 * (1 - t0) + f2 * s0 * t0
+                      + f3 * (1 - s0) * t0, mid)
+    # central differences are exact for a quadratic, forward ones off by a h
+    a, h, x = 1.7, 0.3, 0.8
+    f = lambda u: a * u * u  # noqa: E731
+    assert np.isclose((f(x + h) - f(x - h)) / (2 * h), 2 * a * x)
+    assert np.isclose((f(x + h) - f(x)) / h - 2 * a * x, a * h)
+    assert answer_text("ch18-central-difference-quadratic") == "True"
+    # the over operator traversed front to back paints the far layer on top
+    layers = [(np.array([0, 0, 1.0]), 0.9), (np.array([1.0, 0, 0]), 0.9)]   # front first
+
+    def over(seq):
+        C, A = np.zeros(3), 0.0
+        for col, al in seq:
+            C, A = al * col + (1 - al) * C, al + (1 - al) * A
+        return C, A
+    right, wrong = over(layers[::-1]), over(layers)
+    assert right[0][2] > right[0][0] and wrong[0][0] > wrong[0][2]
+    assert np.isclose(right[1], wrong[1])
+    assert "behind" in answer_text("ch18-splat-order")
+    # opacity correction: two slices of 1 - (1 - alpha)^(1/2) let through 1 - alpha
+    alpha = 0.6
+    assert np.isclose((1 - (1 - (1 - alpha) ** 0.5)) ** 2, 1 - alpha)
+    assert not np.isclose((1 - alpha / 2) ** 2, 1 - alpha)
+    assert answer_text("ch18-slice-opacity").startswith("$1 - (1 - ")
+    # a step transfer function: classify-then-interpolate is not interpolate-then-classify
+    step = lambda v: (np.asarray(v) >= 0.5).astype(float)  # noqa: E731
+    v0, v1, w = 0.0, 1.0, 0.3
+    assert (1 - w) * step(v0) + w * step(v1) != step((1 - w) * v0 + w * v1)
+    assert answer_text("ch18-pre-post-classification") == "False"

@@ -74,3 +74,9 @@ from ._ch18.topology import ClassifyCriticalPoint, GriddedFieldStep  # noqa: E40
 
 __all__ += ["ClassifyCriticalPoint", "GriddedFieldStep"]
 EXERCISES += (ClassifyCriticalPoint, GriddedFieldStep)
+# Issue 22, volume methods: the asymptotic decider, central-difference normals, splat order
+from ._ch18.deciders import AsymptoticDecider  # noqa: E402
+from ._ch18.volume_methods import CentralDifferenceNormal, SplatOrder  # noqa: E402
+
+__all__ += ["AsymptoticDecider", "CentralDifferenceNormal", "SplatOrder"]
+EXERCISES += (AsymptoticDecider, CentralDifferenceNormal, SplatOrder)

@@ -5,8 +5,8 @@ import numpy as np
 from .._validate import as_array, as_choice, as_scalar, as_vector
 from ._common import _grid, _spacing
 
-__all__ = ["SQUARE_SADDLES_CENTRE_ABOVE", "SQUARE_TABLE", "isolines", "join_segments",
-    "marching_squares", "marching_squares_cases", "saddle_centre_above"]
+__all__ = ["SQUARE_SADDLES_CENTRE_ABOVE", "SQUARE_TABLE", "asymptotic_decider", "isolines",
+    "join_segments", "marching_squares", "marching_squares_cases", "saddle_centre_above"]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -116,6 +116,75 @@ def _centres(f):
     return 0.25 * (f[:-1, :-1] + f[:-1, 1:] + f[1:, 1:] + f[1:, :-1])
 
 
+def asymptotic_decider(corners, level):
+    r"""The asymptotic decider: the bilinear interpolant's value at its saddle point.
+
+    Inside a cell with corner values :math:`f_0, f_1, f_2, f_3` (counter-clockwise from the
+    bottom left, as everywhere in this module) the bilinear interpolant is
+    :math:`f(s, t) = f_0 (1-s)(1-t) + f_1 s (1-t) + f_2 s t + f_3 (1-s) t`. Setting
+    :math:`\partial f/\partial s = \partial f/\partial t = 0` gives its one critical point, a
+    saddle, at :math:`s^* = (f_0 - f_3) / D`, :math:`t^* = (f_0 - f_1) / D` with
+    :math:`D = f_0 + f_2 - f_1 - f_3`, where
+
+    .. math:: f(s^*, t^*) = \frac{f_0 f_2 - f_1 f_3}{f_0 + f_2 - f_1 - f_3}
+
+    (with :math:`a, b, c, d = f_{00}, f_{10}, f_{01}, f_{11}`: :math:`(ad - bc)/(a + d - b - c)`).
+    If the saddle value is above the level (``>=``), the two above corners of a saddle cell are
+    joined through the cell; otherwise the two below ones. Unlike the midpoint decider (the mean
+    of the corners, :func:`saddle_centre_above`), this is what the bilinear field really does.
+
+    Parameters
+    ----------
+    corners : array_like, shape (..., 4)
+        :math:`f_0, f_1, f_2, f_3` of one cell or of many.
+    level : float
+
+    Returns
+    -------
+    saddle : float or ndarray, shape (...)
+        The interpolant's value at its saddle point.
+    above : bool or ndarray of bool, shape (...)
+        ``saddle >= level``: the above corners are the ones joined.
+
+    Raises
+    ------
+    ValueError
+        For corners not of shape (..., 4), non-finite values, or a cell with
+        :math:`f_0 + f_2 = f_1 + f_3`: its interpolant has no saddle point (it is never a
+        marching-squares saddle, whose two diagonals lie on opposite sides of the level).
+
+    Examples
+    --------
+    Corners 0, 4, 0, 10 at level 3: corners 1 and 3 are above (a saddle). The mean 3.5 says
+    "join 1 and 3", the saddle value :math:`(0 - 40)/(0 - 14) = 2.857 < 3` says "keep them
+    apart":
+
+    >>> asymptotic_decider([0, 4, 0, 10], 3)
+    (2.857142857142857, False)
+    """
+    f = as_array(corners, "corners")
+    if f.ndim == 0 or f.shape[-1] != 4:
+        raise ValueError(f"corners must have shape (..., 4): f0, f1, f2, f3 counter-clockwise "
+                         f"from the bottom left, got shape {f.shape}")
+    c = as_scalar(level, "level")
+    den = f[..., 0] + f[..., 2] - f[..., 1] - f[..., 3]
+    if np.any(den == 0):
+        raise ValueError("corners: a cell with f0 + f2 == f1 + f3 has no saddle point (its "
+                         "bilinear interpolant is a ruled surface without one); the decider "
+                         "is only needed for saddle cells")
+    saddle = (f[..., 0] * f[..., 2] - f[..., 1] * f[..., 3]) / den
+    if saddle.ndim == 0:
+        return float(saddle), bool(saddle >= c)
+    return saddle, saddle >= c
+
+
+def _saddle_values(f, mask):
+    """The asymptotic decider's saddle values of the cells selected by `mask` (saddles)."""
+    cells = np.stack([f[:-1, :-1][mask], f[:-1, 1:][mask], f[1:, 1:][mask], f[1:, :-1][mask]],
+                     axis=-1)
+    return asymptotic_decider(cells, 0.0)[0]
+
+
 # edge -> (row offset, column offset) of its canonical start corner, and its direction
 # (0: along x (columns), 1: along y (rows))
 _SQ_EDGE_START = np.array([[0, 0], [0, 1], [1, 0], [0, 0]])
@@ -138,7 +207,7 @@ def _square_points(f, level, rows, cols, edges):
 
 
 def marching_squares(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0), saddles="midpoint",
-                     cells=None):
+                     cells=None, decider="midpoint"):
     r"""Isoline segments of a 2D field by marching squares.
 
     For each cell: the case index (:func:`marching_squares_cases`), the table
@@ -156,14 +225,18 @@ def marching_squares(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0), saddle
         :math:`(\Delta x, \Delta y)`, positive.
     origin : (float, float)
         :math:`(x_0, y_0)`, the position of ``field[0, 0]``.
-    saddles : {"midpoint", "opposite"}
-        How a saddle cell (case 5 or 10) pairs its four crossings: ``"midpoint"`` as the
-        midpoint decider says; ``"opposite"`` the other way, the reading the decider rejects
-        (the same four points, joined the other way round: what the isoline would look like
-        had the decider answered differently).
+    saddles : {"midpoint", "decider", "opposite"}
+        How a saddle cell (case 5 or 10) pairs its four crossings: ``"midpoint"`` (the old
+        name, kept) or ``"decider"``: as the `decider` says; ``"opposite"`` the other way, the
+        reading the decider rejects (the same four points, joined the other way round: what
+        the isoline would look like had the decider answered differently).
     cells : array_like of bool, shape (ny - 1, nx - 1), optional
         March only the cells where this is True (default all), e.g. the saddle cells
         ``np.isin(marching_squares_cases(field, level), (5, 10))``.
+    decider : {"midpoint", "asymptotic"}
+        What stands for the value at a saddle cell's centre: the mean of its four corners
+        (:func:`saddle_centre_above`, the default) or the bilinear interpolant's saddle value
+        (:func:`asymptotic_decider`, which agrees with the bilinear field's own isoline).
 
     Returns
     -------
@@ -178,7 +251,8 @@ def marching_squares(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0), saddle
     ------
     ValueError
         For a field that is not 2D with at least 2 x 2 samples, NaN in the field, a
-        non-positive spacing, an unknown `saddles` or a `cells` mask of the wrong shape.
+        non-positive spacing, an unknown `saddles` or `decider`, or a `cells` mask of the
+        wrong shape.
 
     Examples
     --------
@@ -204,13 +278,15 @@ def marching_squares(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0), saddle
     c = as_scalar(level, "level")
     dx, dy = _spacing(spacing, 2)
     x0, y0 = as_vector(origin, "origin", 2)
-    as_choice(saddles, "saddles", ("midpoint", "opposite"))
+    as_choice(saddles, "saddles", ("midpoint", "decider", "opposite"))
+    as_choice(decider, "decider", ("midpoint", "asymptotic"))
     cases = _square_cases(f, c).astype(np.intp)
     saddle = (cases == 5) | (cases == 10)
     ext = cases.copy()
     if saddle.any():
-        centre_above = _centres(f)[saddle] >= c
-        ext[saddle] += 16 * (centre_above if saddles == "midpoint" else ~centre_above)
+        centre = _centres(f)[saddle] if decider == "midpoint" else _saddle_values(f, saddle)
+        centre_above = centre >= c
+        ext[saddle] += 16 * (~centre_above if saddles == "opposite" else centre_above)
     segs = _SQUARE_LOOKUP[ext]                            # (ny-1, nx-1, 2, 2)
     if cells is not None:
         marched = np.asarray(cells)
@@ -281,8 +357,11 @@ def join_segments(segments):
     return lines
 
 
-def isolines(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0)):
+def isolines(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0), decider="midpoint"):
     """The isolines of a 2D field as polylines: :func:`marching_squares` + :func:`join_segments`.
+
+    `decider` ("midpoint" or "asymptotic") resolves the saddle cells, as in
+    :func:`marching_squares`.
 
     Returns
     -------
@@ -297,4 +376,4 @@ def isolines(field, level, spacing=(1.0, 1.0), origin=(0.0, 0.0)):
     >>> len(lines), bool(np.allclose(lines[0][0], lines[0][-1]))
     (1, True)
     """
-    return join_segments(marching_squares(field, level, spacing, origin))
+    return join_segments(marching_squares(field, level, spacing, origin, decider=decider))

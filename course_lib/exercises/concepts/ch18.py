@@ -156,4 +156,57 @@ QUESTIONS = [
         ("Forward along both eigenvectors", "Along the stable eigenvector the forward flow "
          "runs back into the saddle: those two curves must be traced backward."),
         correct=2),
+    # Issue 22, volume methods: the asymptotic decider, normals, splatting, slicing, classification
+    _mc(18, "ch18-asymptotic-decider",
+        "A marching-squares cell has corners $f_0 = 0$, $f_1 = 4$, $f_2 = 0$, $f_3 = 10$ "
+        "(counter-clockwise from the bottom left) and the level is 3. What does the asymptotic "
+        "decider do?",
+        ("Joins corners 1 and 3 through the cell, since the mean 3.5 is above 3",
+         "That is the midpoint decider; the asymptotic decider uses the saddle value."),
+        ("Keeps corners 1 and 3 apart: the saddle value $(0 - 40)/(0 - 14) \\approx 2.86$ is "
+         "below 3", "The bilinear field dips below the level between them, so the below "
+         "corners 0 and 2 are the ones joined."),
+        ("Joins corners 0 and 2 because their values are equal", "Equal values say nothing; "
+         "the comparison of the saddle value with the level decides."),
+        ("Nothing: the cell is not ambiguous", "Corners 1 and 3 are above and 0 and 2 below: "
+         "a saddle (case 10)."),
+        correct=1),
+    _tf(18, "ch18-central-difference-quadratic",
+        "The central difference $(f_{i+1} - f_{i-1})/2h$ gives the exact derivative of a "
+        "quadratic, whereas the forward difference $(f_{i+1} - f_i)/h$ is off by $a h$ for "
+        "$f = a x^2$.", True,
+        "The $h^2$ terms of the two neighbours cancel in the central difference; the forward "
+        "difference keeps the term $a h$ (first-order error).",
+        "It is true: the central difference is second-order accurate."),
+    _mc(18, "ch18-splat-order",
+        "Splatting composites sheets of splats back to front with the *over* operator "
+        "$C \\leftarrow c + (1 - \\alpha) C$. What happens if the sheets are traversed front "
+        "to back but the over operator is kept?",
+        ("The same image: compositing order does not matter",
+         "It matters: over puts each new layer in front of what is there."),
+        ("The volume appears as seen from behind: the depth order is reversed",
+         "Each later (farther) sheet is painted over the nearer ones."),
+        ("The image gets more transparent", "The accumulated opacity is the same in any order; "
+         "only the colours change."),
+        ("Early termination stops the rendering too early", "Over does not terminate early."),
+        correct=1),
+    _mc(18, "ch18-slice-opacity",
+        "View-aligned slices are made twice as dense. A slice used to have opacity $\\alpha$; "
+        "what must its opacity become so that the picture stays the same?",
+        ("$\\alpha / 2$", "Opacities do not add: two slices of $\\alpha/2$ let "
+         "$(1 - \\alpha/2)^2 \\ne 1 - \\alpha$ through."),
+        ("$1 - (1 - \\alpha)^{1/2}$", "Then two slices let $(1 - \\alpha)^{1/2 \\cdot 2} = "
+         "1 - \\alpha$ through, as one did (opacity correction)."),
+        ("$\\alpha$", "Twice as many slices of the same opacity make the volume more opaque."),
+        ("$\\alpha^2$", "That makes it more transparent than the right value."),
+        correct=1),
+    _tf(18, "ch18-pre-post-classification",
+        "With a transfer function that jumps from transparent to opaque at one value, "
+        "classifying the voxels first and interpolating their colours (pre-classification) "
+        "renders the same thin surface as interpolating the values and classifying each "
+        "sample (post-classification).", False,
+        "Pre-classification interpolates between a transparent and an opaque voxel, smearing "
+        "the step over whole cells (blocky, blurred rims); post-classification finds the step "
+        "inside the cell.",
+        "False: the two orders agree only for transfer functions linear in the value."),
 ]
