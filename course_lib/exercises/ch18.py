@@ -6,7 +6,9 @@ midpoint decider; the number of triangles a marching-cubes case produces; compos
 along a ray front to back by hand, the sample at which early ray termination stops, and the
 opacity correction for another step size; a maximum intensity projection of a tiny volume; one
 step of the classic Runge-Kutta method (RK4) and the outward drift of Euler's method on a
-circular flow. The ``seed`` draws numbers that work out by hand: whole corner values, opacities
+circular flow; the asymptotic decider, a central-difference normal and the order of splats;
+classifying a critical point from its Jacobian and one step in a gridded field; which line a dye
+release shows, two Euler steps of a pathline and a LIC pixel. The ``seed`` draws numbers that work out by hand: whole corner values, opacities
 in tenths and twentieths, small whole matrices. Case indices and counts are whole numbers,
 compared exactly; every real answer is right to 3 significant digits (the course's one
 tolerance policy). A few variants are boundary cases on purpose (a corner value equal to the
@@ -36,16 +38,29 @@ from ._ch18.volume_rendering import (CompositeFrontToBack, EarlyTermination,
                                      MaxIntensityProjection, OpacityCorrection)
 from ._ch18.streamlines import EulerDrift, RK4Step
 
+from ._ch18.deciders import AsymptoticDecider
+from ._ch18.volume_methods import CentralDifferenceNormal, SplatOrder
+from ._ch18.topology import ClassifyCriticalPoint, GriddedFieldStep
+from ._ch18.unsteady import FlowLineKind, LICPixel, PathlineEulerSteps
+
 __all__ = [
+    "EXERCISES",
+    "AsymptoticDecider",
+    "CentralDifferenceNormal",
+    "ClassifyCriticalPoint",
     "CompositeFrontToBack",
     "CubeTriangleCount",
-    "EXERCISES",
     "EarlyTermination",
     "EulerDrift",
+    "FlowLineKind",
+    "GriddedFieldStep",
+    "LICPixel",
     "MaxIntensityProjection",
     "OpacityCorrection",
+    "PathlineEulerSteps",
     "RK4Step",
     "SaddleResolution",
+    "SplatOrder",
     "SquareCaseIndex",
     "SquareCrossings",
 ]
@@ -62,21 +77,12 @@ EXERCISES = (
     MaxIntensityProjection,
     RK4Step,
     EulerDrift,
+    AsymptoticDecider,
+    CentralDifferenceNormal,
+    SplatOrder,
+    ClassifyCriticalPoint,
+    GriddedFieldStep,
+    FlowLineKind,
+    PathlineEulerSteps,
+    LICPixel,
 )
-
-# Unsteady flow and line integral convolution (course_lib/exercises/_ch18/unsteady.py)
-from ._ch18.unsteady import FlowLineKind, LICPixel, PathlineEulerSteps  # noqa: E402
-
-__all__ += ["FlowLineKind", "LICPixel", "PathlineEulerSteps"]
-EXERCISES += (FlowLineKind, PathlineEulerSteps, LICPixel)
-# --- vector-field topology (course_lib/exercises/_ch18/topology.py) ---
-from ._ch18.topology import ClassifyCriticalPoint, GriddedFieldStep  # noqa: E402
-
-__all__ += ["ClassifyCriticalPoint", "GriddedFieldStep"]
-EXERCISES += (ClassifyCriticalPoint, GriddedFieldStep)
-# Issue 22, volume methods: the asymptotic decider, central-difference normals, splat order
-from ._ch18.deciders import AsymptoticDecider  # noqa: E402
-from ._ch18.volume_methods import CentralDifferenceNormal, SplatOrder  # noqa: E402
-
-__all__ += ["AsymptoticDecider", "CentralDifferenceNormal", "SplatOrder"]
-EXERCISES += (AsymptoticDecider, CentralDifferenceNormal, SplatOrder)

@@ -133,20 +133,29 @@ Files
 -----
 
 ``optics.py``
-    Chapter 15 (lesson section 15.4): reflected and refracted directions, Fresnel and Schlick.
+    Chapter 15 (lesson section 15.5): reflected and refracted directions, Fresnel and Schlick.
 ``intersections.py``
-    Chapter 15 (lesson sections 15.2, 15.6): ray-object intersections, the slab test and the
+    Chapter 15 (lesson sections 15.2, 15.7): ray-object intersections, the slab test and the
     BVH (triangles, brute force and :class:`BVH` itself are in :mod:`course_lib._raycore`,
     shared with :mod:`course_lib.visibility`).
+``quadrics.py``
+    Chapter 15 (lesson section 15.3): every quadric as a 4 x 4 matrix, disks, finite cylinders,
+    and any implicit surface by marching and bracketing.
 ``camera.py``
     Chapter 15 (lesson section 15.1): the pinhole camera, one primary ray per pixel sample.
 ``scene.py``
-    Chapter 15 (lesson section 15.3): the scene description: materials, objects and lights.
+    Chapter 15 (lesson section 15.4): the scene description: materials, objects and lights.
 ``hits.py``
-    Chapter 15 (lesson section 15.3): the scene as arrays: nearest hits, surface data, shadow
+    Chapter 15 (lesson section 15.4): the scene as arrays: nearest hits, surface data, shadow
     rays.
 ``whitted.py``
-    Chapter 15 (lesson sections 15.3, 15.5): Whitted's recursive ray tracer and its ray tree.
+    Chapter 15 (lesson sections 15.4, 15.6): Whitted's recursive ray tracer and its ray tree.
+``spatial.py``
+    Chapter 15 (lesson section 15.8): spatial subdivision: the uniform grid walked by 3D-DDA,
+    the octree and the kd-tree, with their test counts beside the BVH.
+``distributed.py``
+    Chapter 15 (lesson section 15.11): distributed ray tracing: antialiasing, soft shadows,
+    glossy reflection, depth of field and motion blur, each a seeded Monte Carlo estimate.
 ``examples.py``
     Chapter 15: small example scenes for the lesson and the tests.
 ``_common.py``

@@ -139,7 +139,8 @@ Files
 ``data.py``
     Chapter 18 (lesson section 1): example scalar fields, volumes and vector fields, generated.
 ``contour_lines.py``
-    Chapter 18 (lesson section 2): isolines by marching squares.
+    Chapter 18 (lesson section 2): isolines by marching squares, with the midpoint or the
+    asymptotic decider for saddle cells.
 ``isosurfaces.py``
     Chapter 18 (lesson section 3): isosurfaces by marching cubes.
 ``grids.py``
@@ -151,14 +152,23 @@ Files
     Chapter 18 (lesson section 5.1): streamlines of a vector field, integrated step by step.
 ``glyphs.py``
     Chapter 18 (lesson section 5): glyphs (arrows) for vector fields.
+``volume_methods.py``
+    Chapter 18 (lesson sections 3 and 4): normals and shading from the gradient; splatting,
+    texture-based slicing and shear-warp beside ray casting; pre- and post-classification.
+``topology.py``
+    Chapter 18 (lesson section 6): gridded fields and their integration, critical points
+    classified by the Jacobian's eigenvalues, separatrices.
+``unsteady.py``
+    Chapter 18 (lesson section 7): streamlines, pathlines, streaklines and timelines of
+    time-dependent fields; line integral convolution.
 ``_common.py``
     the shared input checks (built on :mod:`course_lib._validate`)
 """
 
 from .data import (Field, example_field_2d, example_vector_field, example_volume,
     sample_vector_field)
-from .contour_lines import (SQUARE_SADDLES_CENTRE_ABOVE, SQUARE_TABLE, isolines, join_segments,
-    marching_squares, marching_squares_cases, saddle_centre_above)
+from .contour_lines import (SQUARE_SADDLES_CENTRE_ABOVE, SQUARE_TABLE, asymptotic_decider,
+    isolines, join_segments, marching_squares, marching_squares_cases, saddle_centre_above)
 from .isosurfaces import (CENTRE, CUBE_CORNERS, CUBE_EDGES, cube_triangles, enclosed_volume,
     gradient, marching_cubes, marching_cubes_cases, surface_area, _ambiguous_faces)
 from .grids import (interpolate, multilinear_interpolate)
@@ -177,6 +187,7 @@ __all__ = [
     "SQUARE_TABLE",
     "VolumeImage",
     "arrows",
+    "asymptotic_decider",
     "composite",
     "cube_triangles",
     "enclosed_volume",

@@ -58,17 +58,14 @@ import numpy as np
 
 from .._validate import as_choice, as_positive, as_scalar, as_unit_vector, as_vector
 from ._common import _grid, _spacing
-from .contour_lines import asymptotic_decider
 from .grids import _lerp_grid
 from .isosurfaces import gradient
 from .volume_rendering import _rgba_transfer, _view_window, volume_render
 
-__all__ = ["Comparison", "asymptotic_decider", "classify", "compare_renderers",
+__all__ = ["Comparison", "classify", "compare_renderers",
     "gradient_opacity", "gradient_shading", "isosurface_normals", "shear_warp", "slice_render",
     "splat_render"]
 
-# asymptotic_decider lives in contour_lines.py (next to the midpoint decider); it is listed
-# here too so that ``scivis.asymptotic_decider`` reaches it through the package's star import.
 
 
 # ---------------------------------------------------------------------------------------------
