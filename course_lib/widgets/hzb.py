@@ -6,7 +6,8 @@ The box's screen rectangle is tinted pink, with its nearest depth as a swatch in
 (on the picture's scale), and the texels of the shown level that cover it are outlined: red
 when the box is rejected there, black when it must be drawn. The text compares the texels read
 with the pixels a full-resolution test reads, and names the level the hierarchical test would
-pick by itself (at most 2 x 2 texels). The HOM threshold slider is live in HOM mode only.
+pick by itself (at most 2 x 2 texels). In HOM mode the texels at least as opaque as the
+threshold are tinted blue; the threshold slider is live in HOM mode only.
 """
 from dataclasses import dataclass
 from functools import lru_cache
@@ -128,6 +129,9 @@ def scene(state):
         full_rej = visibility.full_test(_buffers()[1], rect, z)[0]
     else:
         rgb = np.repeat(big[..., None], 3, axis=2) * 0.85 + 0.1
+        # texels at least as opaque as the threshold count as opaque: tinted blue
+        opaque = big >= state.threshold
+        rgb[opaque] = 0.6 * rgb[opaque] + 0.4 * np.array([0.2, 0.5, 1.0])
         t = visibility.hom_test(hom, rect, z, deb, state.threshold, level=level)
         rejected = t.culled
         texels = t.reads                       # with the descent into partly covered texels
@@ -172,8 +176,8 @@ def scene(state):
                f"{state.threshold:.2f} ({'opaque' if t.opaque else 'not opaque'}, after "
                f"descending into partly covered texels); depth "
                f"estimate {'passed' if t.behind else 'failed'}")
-        full = ("HOM is approximate: with a threshold below 1 it may cull a box seen through "
-                "small gaps.")
+        full = ("Blue texels are at least as opaque as the threshold. HOM is approximate: "
+                "with a threshold below 1 it may cull a box seen through small gaps.")
     text = (f"<b>{state.mode}, level {level}: {word}</b>. {how}. Texels read: {texels} "
             f"(a full test reads {pixels} pixels). The automatic choice (at most 2 x 2 texels) "
             f"is level {auto}: {'rejected' if auto_rej else 'kept'}. {full}")
