@@ -2,10 +2,12 @@
 
 The picture is one level of the pyramid (nearest-neighbour enlarged to the screen): the depth
 pyramid (max of 2 x 2) in HZB mode, the occluders' opacity pyramid (mean of 2 x 2) in HOM mode.
-The box's screen rectangle is tinted pink and the texels of the shown level that cover it are
-outlined: red when the box is rejected there, black when it must be drawn. The text compares
-the texels read with the pixels a full-resolution test reads, and names the level the
-hierarchical test would pick by itself (at most 2 x 2 texels).
+The box's screen rectangle is tinted pink, with its nearest depth as a swatch in the middle
+(on the picture's scale), and the texels of the shown level that cover it are outlined: red
+when the box is rejected there, black when it must be drawn. The text compares the texels read
+with the pixels a full-resolution test reads, and names the level the hierarchical test would
+pick by itself (at most 2 x 2 texels). In HOM mode the texels at least as opaque as the
+threshold are tinted blue; the threshold slider is live in HOM mode only.
 """
 from dataclasses import dataclass
 from functools import lru_cache
@@ -127,6 +129,9 @@ def scene(state):
         full_rej = visibility.full_test(_buffers()[1], rect, z)[0]
     else:
         rgb = np.repeat(big[..., None], 3, axis=2) * 0.85 + 0.1
+        # texels at least as opaque as the threshold count as opaque: tinted blue
+        opaque = big >= state.threshold
+        rgb[opaque] = 0.6 * rgb[opaque] + 0.4 * np.array([0.2, 0.5, 1.0])
         t = visibility.hom_test(hom, rect, z, deb, state.threshold, level=level)
         rejected = t.culled
         texels = t.reads                       # with the descent into partly covered texels
@@ -139,6 +144,15 @@ def scene(state):
     tint = np.array([0.95, 0.35, 0.75])
     img[j0 * s:(j1 + 1) * s, i0 * s:(i1 + 1) * s] = 0.55 * img[j0 * s:(j1 + 1) * s,
                                                               i0 * s:(i1 + 1) * s] + 0.45 * tint
+    # a swatch in the box's middle: its nearest depth on the picture's scale, so moving the
+    # box in depth shows, and a swatch darker than the covering texels means nearer than them
+    own = (_LUT[int(np.clip(z, 0.0, 1.0) * 255)] if state.mode == "HZB"
+           else np.full(3, 0.85 * z + 0.1))
+    w_box, h_box = (i1 - i0 + 1) * s, (j1 - j0 + 1) * s
+    half = max(min(w_box, h_box) // 2, 2)
+    cx, cy = i0 * s + w_box // 2, j0 * s + h_box // 2
+    img[max(cy - half // 2, 0):cy + (half + 1) // 2,
+        max(cx - half // 2, 0):cx + (half + 1) // 2] = own
     edge = np.array([0.9, 0.05, 0.05]) if rejected else np.array([0.05, 0.05, 0.05])
     a0, b0, a1, b1 = (i0 >> level) * f * s, (j0 >> level) * f * s, \
         min(((i1 >> level) + 1) * f, SIZE) * s, min(((j1 >> level) + 1) * f, SIZE) * s
@@ -162,8 +176,8 @@ def scene(state):
                f"{state.threshold:.2f} ({'opaque' if t.opaque else 'not opaque'}, after "
                f"descending into partly covered texels); depth "
                f"estimate {'passed' if t.behind else 'failed'}")
-        full = ("HOM is approximate: with a threshold below 1 it may cull a box seen through "
-                "small gaps.")
+        full = ("Blue texels are at least as opaque as the threshold. HOM is approximate: "
+                "with a threshold below 1 it may cull a box seen through small gaps.")
     text = (f"<b>{state.mode}, level {level}: {word}</b>. {how}. Texels read: {texels} "
             f"(a full test reads {pixels} pixels). The automatic choice (at most 2 x 2 texels) "
             f"is level {auto}: {'rejected' if auto_rej else 'kept'}. {full}")
@@ -197,7 +211,7 @@ class HZBExplorer(Explorer):
         ax = self.fig.add_axes([0.1, 0.08, 0.85, 0.85])
         self.image = ax.imshow(s["image"], origin="lower", extent=(0, SIZE, 0, SIZE),
                                interpolation="nearest")
-        ax.set_title("box (pink); covering texels: red rejects, black keeps",
+        ax.set_title("box (pink; middle: its depth); texels: red rejects, black keeps",
                      fontsize=_style.LABEL)
         _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.image])
@@ -216,9 +230,11 @@ class HZBExplorer(Explorer):
                            self.threshold])
         self.widget = w.VBox([w.HBox([self.fig.canvas, controls]), self.info])
         self.info.value = s["text"]
+        self.threshold.disabled = self.state.mode != "HOM"
 
     def update(self):
         """Recompute the scene and repaint the image."""
+        self.threshold.disabled = self.state.mode != "HOM"     # the threshold is HOM's alone
         s = scene(self.state)
         self.image.set_data(s["image"])
         self.info.value = s["text"]
