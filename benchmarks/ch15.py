@@ -89,7 +89,15 @@ def operations(quick=False):
                      lambda: bvh.intersect(o[:subset], d[:subset]),
                      lambda: numpy_intersector.intersects_first(o[:subset], d[:subset]),
                      "trimesh ray_triangle (numpy + rtree)", repeat, 1))
+    for topic in _topics():
+        rows += topic.operations(quick)
     return rows
+
+
+def _topics():
+    from benchmarks import ch15_quadrics, ch15_spatial, ch15_distributed
+
+    return (ch15_quadrics, ch15_spatial, ch15_distributed,)
 
 
 def widgets(quick=False):
@@ -116,4 +124,6 @@ def widgets(quick=False):
                            lambda i: setattr(tree.column, "value", 40 + (i % 80)),
                            tree.fig.canvas.draw, repeat))
     plt.close(tree.fig)
+    for topic in _topics():
+        rows += topic.widgets(quick)
     return rows

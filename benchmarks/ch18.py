@@ -87,7 +87,15 @@ def operations(quick=False):
         f"streamlines RK4, {steps} steps", seeds_n,
         lambda: scivis.streamline(spiral, seeds, h, steps, method="rk4"), scipy_lines,
         "scipy solve_ivp (RK45, one system)", repeat))
+    for topic in _topics():
+        rows += topic.operations(quick)
     return rows
+
+
+def _topics():
+    from benchmarks import ch18_volume, ch18_topology, ch18_unsteady
+
+    return (ch18_volume, ch18_topology, ch18_unsteady,)
 
 
 def widgets(quick=False):
@@ -129,4 +137,6 @@ def widgets(quick=False):
         lambda i: setattr(explorer.step, "value", 0.04 + 0.46 * ((i % 20) / 19)),
         explorer.fig.canvas.draw, repeat))
     plt.close(explorer.fig)
+    for topic in _topics():
+        rows += topic.widgets(quick)
     return rows
