@@ -293,10 +293,13 @@ class FlowTopologyExplorer(Explorer):
         self.blitter.forget_background()
 
     def _on_preset(self, change):
+        # the seed keeps its place on the screen: the same fractions of the new view
+        (a0, b0), (a1, b1) = topology.FLOW_PRESETS[self.state.preset][3]
+        frac = (np.asarray(self.state.seed, float) - [a0, b0]) / [a1 - a0, b1 - b0]
         self.state.preset = change["new"]
         names, defaults, ranges, ((x0, y0), (x1, y1)) = topology.FLOW_PRESETS[self.state.preset]
         self.state.p, self.state.q = defaults
-        self.state.seed = np.array([x0 + 0.8 * (x1 - x0), y0 + 0.7 * (y1 - y0)])
+        self.state.seed = np.array([x0, y0]) + np.clip(frac, 0.0, 1.0) * [x1 - x0, y1 - y0]
         self.drag.points[0] = self.state.seed
         self._quiet = True                  # the sliders move: one update at the end
         try:

@@ -317,13 +317,20 @@ class SpatialExplorer(Explorer):
         self.info = panel(width="420px")
         controls = w.VBox([self.structure, self.ox, self.oy, self.angle, self.resolution,
                            self.leaf_size])
+        self._enable()
         self.widget = w.VBox([w.HBox([self.fig.canvas, controls]), self.info])
         self._draw(s)
 
     def update(self):
         """Recompute the walk (the structures are cached) and redraw."""
+        self._enable()
         self._draw(scene(self.state))
         self.blitter.update()
+
+    def _enable(self):
+        # the grid has cells and no leaves; the trees have leaves and no grid cells
+        self.resolution.disabled = self.state.structure != "grid"
+        self.leaf_size.disabled = self.state.structure == "grid"
 
     def _draw(self, s):
         self.image.set_data(s["image"])
