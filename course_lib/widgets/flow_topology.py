@@ -189,6 +189,9 @@ def scene(state):
             "domain": topology.FLOW_PRESETS[state.preset][3], "text": text}
 
 
+_VIEW_RATIO = 4 / 3                  # the view's width : height, for every preset
+
+
 class FlowTopologyExplorer(Explorer):
     """Choose a preset field, deform it with two sliders, see its critical points and
     separatrices; drag the seed to integrate one streamline in the gridded field.
@@ -288,18 +291,27 @@ class FlowTopologyExplorer(Explorer):
         self._draw(scene(self.state))
 
     def _limits(self):
+        # every preset's view padded to one width : height (4 : 3), so that the equal-aspect
+        # axes keep the same box on the canvas whichever field is shown
         (x0, y0), (x1, y1) = topology.FLOW_PRESETS[self.state.preset][3]
-        self.ax.set(xlim=(x0, x1), ylim=(y0, y1))
+        w, h = x1 - x0, y1 - y0
+        w, h = max(w, h * _VIEW_RATIO), max(h, w / _VIEW_RATIO)
+        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+        self.ax.set(xlim=(cx - w / 2, cx + w / 2), ylim=(cy - h / 2, cy + h / 2))
         self.blitter.forget_background()
 
     def _on_preset(self, change):
-        # the seed keeps its place on the screen: the same fractions of the new view
-        (a0, b0), (a1, b1) = topology.FLOW_PRESETS[self.state.preset][3]
-        frac = (np.asarray(self.state.seed, float) - [a0, b0]) / [a1 - a0, b1 - b0]
+        # the seed keeps its place on the screen (the axes box does not change between presets)
+        self.ax.apply_aspect()
+        on_screen = self.ax.transData.transform(np.asarray(self.state.seed, float))
         self.state.preset = change["new"]
-        names, defaults, ranges, ((x0, y0), (x1, y1)) = topology.FLOW_PRESETS[self.state.preset]
+        names, defaults, ranges, _ = topology.FLOW_PRESETS[self.state.preset]
         self.state.p, self.state.q = defaults
-        self.state.seed = np.array([x0, y0]) + np.clip(frac, 0.0, 1.0) * [x1 - x0, y1 - y0]
+        self._limits()
+        self.ax.apply_aspect()
+        (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
+        x, y = self.ax.transData.inverted().transform(on_screen)
+        self.state.seed = np.array([min(max(x, x0), x1), min(max(y, y0), y1)])
         self.drag.points[0] = self.state.seed
         self._quiet = True                  # the sliders move: one update at the end
         try:
