@@ -59,7 +59,7 @@ class State:
     q: float = 0.5
     method: str = "rk4"
     step: float = 0.15
-    seed: np.ndarray = field(default_factory=lambda: np.array([-0.5, 1.2]))
+    seed: np.ndarray = field(default_factory=lambda: np.array([-0.5, 0.75]))
     style: str = "arrows"
     show_separatrices: bool = True
 
@@ -305,13 +305,15 @@ class FlowTopologyExplorer(Explorer):
         self.ax.apply_aspect()
         on_screen = self.ax.transData.transform(np.asarray(self.state.seed, float))
         self.state.preset = change["new"]
-        names, defaults, ranges, _ = topology.FLOW_PRESETS[self.state.preset]
+        names, defaults, ranges, ((x0, y0), (x1, y1)) = topology.FLOW_PRESETS[self.state.preset]
         self.state.p, self.state.q = defaults
         self._limits()
         self.ax.apply_aspect()
-        (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
         x, y = self.ax.transData.inverted().transform(on_screen)
-        self.state.seed = np.array([min(max(x, x0), x1), min(max(y, y0), y1)])
+        # ... unless that is outside the new field's domain: then the nearest point inside it
+        mx, my = 0.02 * (x1 - x0), 0.02 * (y1 - y0)
+        self.state.seed = np.array([min(max(x, x0 + mx), x1 - mx),
+                                    min(max(y, y0 + my), y1 - my)])
         self.drag.points[0] = self.state.seed
         self._quiet = True                  # the sliders move: one update at the end
         try:
