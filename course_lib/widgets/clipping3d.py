@@ -168,7 +168,7 @@ def _explain(region, k, rows, codes, t_in, t_out, clipped, counts, steps):
     table = ("<table style='font-size:90%'><tr><th>side</th><th>p</th><th>q</th><th>t = q/p"
              "</th><th></th></tr>" + "".join(cells) + "</table>")
     if k == 0:
-        step_text = "Step 0: no plane yet; [t_in, t_out] = [0, 1]."
+        step_text = "Step 0: no plane yet; [t_in, t_out] = [0, 1]"
     else:
         r = rows[k - 1]
         step_text = (f"Plane {k} ({r['side']}): [t_in, t_out] = [{fmt.number(t_in)}, "

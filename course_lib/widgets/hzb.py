@@ -208,10 +208,11 @@ class HZBExplorer(Explorer):
         self.state = state or State()
         s = scene(self.state)
         self.fig = draw.figure(figsize=(4.2, 4.2))
-        ax = self.fig.add_axes([0.1, 0.08, 0.85, 0.85])
+        ax = self.fig.add_axes([0.1, 0.07, 0.85, 0.8])
         self.image = ax.imshow(s["image"], origin="lower", extent=(0, SIZE, 0, SIZE),
                                interpolation="nearest")
-        ax.set_title("box (pink; middle: its depth); texels: red rejects, black keeps",
+        ax.set_title("box pink, its depth in the middle\n"
+                     "covering texels: red rejects, black keeps",
                      fontsize=_style.LABEL)
         _style.style_figure(self.fig)
         self.blitter = draw.Blitter(self.fig, [self.image])
