@@ -133,8 +133,11 @@ def scene(state):
         roots = (np.sort(np.roots([a, b, c]).real) if disc >= 0 else np.array([]))
     else:
         roots = np.array([-c / b]) if b != 0 else np.array([])
-    equation = ("f(t) = n·(o + t d − c) = " + f"{b:.3f} t + {c:.3f}" if kind == "disk" else
-                f"f(t) = {a:.3f} t² + {b:+.3f} t {c:+.3f}")
+    def signed(x):
+        return f"{'−' if x < 0 else '+'} {abs(x):.3f}"
+
+    equation = (f"f(t) = n·(o + t d − c) = {b:.3f} t {signed(c)}" if kind == "disk" else
+                f"f(t) = {a:.3f} t² {signed(b)} t {signed(c)}")
     text = (f"<b>{kind}</b>: radius {state.radius:.2f}, shape {state.shape:.2f}"
             + ("" if kind == "disk" else f", cut at |z| ≤ {h:.2f}")
             + f". Pixel (row {row}, column {col}): {equation}; roots "
