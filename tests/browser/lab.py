@@ -295,7 +295,9 @@ class PageKernel:
     the server's runtime folder): it reads the explorers' state the page cannot show, such as
     where a draggable point lies, and proves the kernel is the same one at the end."""
 
-    def __init__(self, server, path, timeout=30):
+    # generous: the calls check liveness and read state, not speed; on a loaded 2-core CI
+    # machine a kernel may still be working through an explorer's queued frames for a while
+    def __init__(self, server, path, timeout=120):
         from jupyter_client import BlockingKernelClient
 
         sessions = json.load(urllib.request.urlopen(
