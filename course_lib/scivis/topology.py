@@ -22,6 +22,7 @@ import numpy as np
 from .._validate import as_array, as_choice, as_positive, as_vector, as_whole
 from ._common import _spacing
 from .data import Field
+from .grids import _lerp_grid
 
 __all__ = ["CRITICAL_CLASSES", "FLOW_PRESETS", "Classification", "CriticalPoint",
            "bilinear_velocity", "classify_critical_point", "critical_points", "gridded_field",
@@ -104,12 +105,13 @@ def _cell_coords(shape, spacing, origin, x, y):
 
 
 def _bilinear(g, spacing, origin, x, y):
-    """The bilinear interpolation of g (ny, nx, 2) at points x, y (same shape): (..., 2)."""
-    i, j, s, t = _cell_coords(g.shape[:2], spacing, origin, x, y)
-    s, t = s[..., None], t[..., None]
-    c00, c10, c01, c11 = g[j, i], g[j, i + 1], g[j + 1, i], g[j + 1, i + 1]
-    bottom = c00 + s * (c10 - c00)
-    return bottom + t * (c01 + s * (c11 - c01) - bottom)
+    """The bilinear interpolation of g (ny, nx, 2) at points x, y (same shape): (..., 2).
+
+    The grid package's one multilinear interpolation (clamped into the grid), on index
+    coordinates."""
+    shape = np.shape(x)
+    idx = [(np.ravel(x) - origin[0]) / spacing[0], (np.ravel(y) - origin[1]) / spacing[1]]
+    return _lerp_grid(g.reshape(-1, 2), g.shape[1::-1], idx).reshape(shape + (2,))
 
 
 def bilinear_velocity(grid_u, grid_v, x, y, spacing=1.0, origin=(0.0, 0.0)):
