@@ -273,3 +273,34 @@ def right_answer_test(specs, exercises, decimals=3):
             assert_accepted(ex, [right, np.round(right, decimals), np.asarray(right).tolist()])
 
     return test_right_answer_is_accepted
+
+
+def topic(module, specs):
+    """The chapter module `module` narrowed to the exercises in `specs` (a chapter's exercises
+    are split over topic test files: each file tests its own, and common_tests(topic(...), ...)
+    checks exactly those)."""
+    import types
+    return types.SimpleNamespace(EXERCISES=tuple(cls for cls in module.EXERCISES
+                                                 if cls.__name__ in specs),
+                                 **{name: getattr(module, name) for name in specs})
+
+
+def every_exercise_tested(module, specs, at_least):
+    """A test: the chapter's test files (test_exercises_chNN.py with `specs`, and every
+    test_exercises_chNN_*.py beside it) together test every exercise of ``module.EXERCISES``,
+    each in exactly one file, and the chapter has at least `at_least` exercises."""
+    import importlib
+    from pathlib import Path
+
+    chapter = module.__name__.rsplit(".", 1)[1]
+
+    def test_every_exercise_is_tested_in_one_file():
+        files = sorted(Path(__file__).parent.glob(f"test_exercises_{chapter}_*.py"))
+        assert files
+        tested = list(specs)
+        for path in files:
+            tested += list(importlib.import_module(path.stem).SPECS)
+        assert sorted(tested) == sorted(cls.__name__ for cls in module.EXERCISES)
+        assert len(module.EXERCISES) >= at_least
+
+    return test_every_exercise_is_tested_in_one_file

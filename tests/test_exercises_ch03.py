@@ -7,10 +7,7 @@ placeholders are "unanswered", garbage is "invalid", and every anticipated mista
 from the question's attributes, is named by its diagnosis. Nothing is copied from the checker's
 output.
 """
-import importlib
-from pathlib import Path
 import math
-import types
 
 import numpy as np
 import pytest
@@ -354,9 +351,7 @@ LISTS = [name for name, (_, form) in SPECS.items() if form in ("point", "vector"
 
 #: This file tests the chapter's older topics (SPECS); tests/test_exercises_ch03_*.py the others,
 #: and test_every_exercise_is_tested_in_one_file holds the union to the chapter's list.
-TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch03.EXERCISES
-                                              if cls.__name__ in SPECS),
-                              **{name: getattr(ch03, name) for name in SPECS})
+TOPIC = harness.topic(ch03, SPECS)
 exercises = harness.variants(TOPIC)
 
 
@@ -534,12 +529,5 @@ def test_a_fresh_seed_is_a_fresh_exercise(name):
     assert len(answers) >= MIN_VARIANTS, (name, len(answers))
 
 
-def test_every_exercise_is_tested_in_one_file():
-    """Together the chapter's exercise test files test every exercise of ``ch03.EXERCISES``,
-    each in exactly one file (this file the older topics, tests/test_exercises_ch03_*.py the
-    newer ones)."""
-    tested = list(SPECS)
-    for path in sorted(Path(__file__).parent.glob("test_exercises_ch03_*.py")):
-        tested += list(importlib.import_module(path.stem).SPECS)
-    assert sorted(tested) == sorted(cls.__name__ for cls in ch03.EXERCISES)
-    assert len(ch03.EXERCISES) >= 10
+test_every_exercise_is_tested_in_one_file = harness.every_exercise_tested(
+    ch03, SPECS, at_least=10)

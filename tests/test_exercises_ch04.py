@@ -6,10 +6,7 @@ single precision, or closed forms typed out below, never the course_lib function
 calls) is accepted, placeholders are "unanswered", garbage is "invalid", and every anticipated
 mistake, rebuilt here from the question's attributes, is named by its diagnosis.
 """
-import importlib
-from pathlib import Path
 import math
-import types
 
 import numpy as np
 import pytest
@@ -331,9 +328,7 @@ GARBAGE = {"matrix": MATRIX_GARBAGE, "projective": MATRIX_GARBAGE, "point": POIN
 
 #: This file tests the chapter's older topics (SPECS); tests/test_exercises_ch04_*.py the others,
 #: and test_every_exercise_is_tested_in_one_file holds the union to the chapter's list.
-TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch04.EXERCISES
-                                              if cls.__name__ in SPECS),
-                              **{name: getattr(ch04, name) for name in SPECS})
+TOPIC = harness.topic(ch04, SPECS)
 exercises = harness.variants(TOPIC)
 
 
@@ -486,12 +481,5 @@ def test_a_fresh_seed_is_a_fresh_exercise(name):
     assert len(answers) >= MIN_VARIANTS, (name, len(answers))
 
 
-def test_every_exercise_is_tested_in_one_file():
-    """Together the chapter's exercise test files test every exercise of ``ch04.EXERCISES``,
-    each in exactly one file (this file the older topics, tests/test_exercises_ch04_*.py the
-    newer ones)."""
-    tested = list(SPECS)
-    for path in sorted(Path(__file__).parent.glob("test_exercises_ch04_*.py")):
-        tested += list(importlib.import_module(path.stem).SPECS)
-    assert sorted(tested) == sorted(cls.__name__ for cls in ch04.EXERCISES)
-    assert len(ch04.EXERCISES) >= 10
+test_every_exercise_is_tested_in_one_file = harness.every_exercise_tested(
+    ch04, SPECS, at_least=10)

@@ -7,10 +7,7 @@ the course_lib or ch05 function the checker calls) is accepted, placeholders are
 garbage is "invalid", and every anticipated mistake, rebuilt here from the question's
 attributes, is named by its diagnosis.
 """
-import importlib
-from pathlib import Path
 import math
-import types
 from fractions import Fraction
 
 import numpy as np
@@ -462,9 +459,7 @@ GARBAGE = {"set": SET_GARBAGE, "codes": CODES_GARBAGE, "words": WORDS_GARBAGE,
 
 #: This file tests the chapter's older topics (SPECS); tests/test_exercises_ch05_*.py the others,
 #: and test_every_exercise_is_tested_in_one_file holds the union to the chapter's list.
-TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch05.EXERCISES
-                                              if cls.__name__ in SPECS),
-                              **{name: getattr(ch05, name) for name in SPECS})
+TOPIC = harness.topic(ch05, SPECS)
 exercises = harness.variants(TOPIC)
 
 
@@ -797,12 +792,5 @@ def test_other_exercises_never_land_on_a_boundary_case():
         assert len(set(keys)) == len(keys)
 
 
-def test_every_exercise_is_tested_in_one_file():
-    """Together the chapter's exercise test files test every exercise of ``ch05.EXERCISES``,
-    each in exactly one file (this file the older topics, tests/test_exercises_ch05_*.py the
-    newer ones)."""
-    tested = list(SPECS)
-    for path in sorted(Path(__file__).parent.glob("test_exercises_ch05_*.py")):
-        tested += list(importlib.import_module(path.stem).SPECS)
-    assert sorted(tested) == sorted(cls.__name__ for cls in ch05.EXERCISES)
-    assert len(ch05.EXERCISES) >= 10
+test_every_exercise_is_tested_in_one_file = harness.every_exercise_tested(
+    ch05, SPECS, at_least=10)

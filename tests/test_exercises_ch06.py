@@ -9,10 +9,7 @@ records typed out from the face lists, the one-ring ordered by angle around the 
 direction, point-to-plane distances and a least-squares solve (numpy.linalg.lstsq) for the
 quadric error metric; never with the course_lib function the checker calls.
 """
-import importlib
 import math
-import types
-from pathlib import Path
 from collections import Counter
 
 import networkx as nx
@@ -394,9 +391,7 @@ DISCRETE = {"name", "index", "record", "ring"}
 #: The chapter's exercises may be split over topic files: this one tests those in SPECS,
 #: tests/test_exercises_ch06_*.py the others, and test_every_exercise_is_tested_in_one_file
 #: holds the union to the chapter's list.
-TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch06.EXERCISES
-                                              if cls.__name__ in SPECS),
-                              **{name: getattr(ch06, name) for name in SPECS})
+TOPIC = harness.topic(ch06, SPECS)
 exercises = harness.variants(TOPIC)
 
 
@@ -601,11 +596,5 @@ def test_seeds_give_many_different_answers(name):
     assert len(answers) >= FEWEST_ANSWERS.get(name, 30), (name, len(answers))
 
 
-def test_every_exercise_is_tested_in_one_file():
-    """Together the chapter's exercise test files test every exercise of ``ch06.EXERCISES``,
-    each in exactly one file."""
-    tested = list(SPECS)
-    for path in sorted(Path(__file__).parent.glob("test_exercises_ch06_*.py")):
-        tested += list(importlib.import_module(path.stem).SPECS)
-    assert sorted(tested) == sorted(cls.__name__ for cls in ch06.EXERCISES)
-    assert len(ch06.EXERCISES) >= 10
+test_every_exercise_is_tested_in_one_file = harness.every_exercise_tested(
+    ch06, SPECS, at_least=10)

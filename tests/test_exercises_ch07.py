@@ -9,10 +9,7 @@ subdivision and degree elevation), scipy's BSpline (basis functions and B-spline
 circular arc, the conic invariant, the table of properties), never with the course_lib function
 the checker calls.
 """
-import importlib
 import math
-import types
-from pathlib import Path
 
 import bezier
 import numpy as np
@@ -413,9 +410,7 @@ DISCRETE = {"indices", "names", "properties"}
 #: The chapter's exercises may be split over topic files: this one tests those in SPECS,
 #: tests/test_exercises_ch07_*.py the others, and test_every_exercise_is_tested_in_one_file
 #: holds the union to the chapter's list.
-TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch07.EXERCISES
-                                              if cls.__name__ in SPECS),
-                              **{name: getattr(ch07, name) for name in SPECS})
+TOPIC = harness.topic(ch07, SPECS)
 exercises = harness.variants(TOPIC)
 
 
@@ -603,11 +598,5 @@ def test_properties_not_shown_may_be_named_when_they_hold():
             assert fb.status == "wrong" and fb.diagnosis == f"extra: {name}", (ex, name, fb)
 
 
-def test_every_exercise_is_tested_in_one_file():
-    """Together the chapter's exercise test files test every exercise of ``ch07.EXERCISES``,
-    each in exactly one file."""
-    tested = list(SPECS)
-    for path in sorted(Path(__file__).parent.glob("test_exercises_ch07_*.py")):
-        tested += list(importlib.import_module(path.stem).SPECS)
-    assert sorted(tested) == sorted(cls.__name__ for cls in ch07.EXERCISES)
-    assert len(ch07.EXERCISES) >= 12
+test_every_exercise_is_tested_in_one_file = harness.every_exercise_tested(
+    ch07, SPECS, at_least=12)

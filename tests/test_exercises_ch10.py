@@ -10,10 +10,7 @@ question's values); lightness with scikit-image's ``rgb2lab``; the lightness cur
 from matplotlib's colour maps and scikit-image; the kinds of colour map from a table typed out
 here. Never with the course_lib function the checker calls.
 """
-import importlib
 import math
-import types
-from pathlib import Path
 
 import matplotlib
 import numpy as np
@@ -258,9 +255,7 @@ DISCRETE = {"names", "kind"}
 #: The chapter's exercises are split over topic files: this one tests those in SPECS (section
 #: 10.5), tests/test_exercises_ch10_*.py the others, and test_every_exercise_is_tested_in_one_file
 #: holds the union to the chapter's list.
-TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch10.EXERCISES
-                                              if cls.__name__ in SPECS),
-                              **{name: getattr(ch10, name) for name in SPECS})
+TOPIC = harness.topic(ch10, SPECS)
 exercises = harness.variants(TOPIC)
 
 
@@ -396,14 +391,5 @@ def test_design_opacity_uses_the_tolerance_policy():
         assert fb.status == "wrong" and fb.diagnosis == "function differs", (ex, fb)
 
 
-def test_every_exercise_is_tested_in_one_file():
-    """Together the chapter's exercise test files test every exercise of ``ch10.EXERCISES``
-    (this file the tone-mapping ones of section 10.5, tests/test_exercises_ch10_*.py the other
-    sections'), each in exactly one file."""
-    files = sorted(Path(__file__).parent.glob("test_exercises_ch10_*.py"))
-    assert files
-    tested = list(SPECS)
-    for path in files:
-        tested += list(importlib.import_module(path.stem).SPECS)
-    assert sorted(tested) == sorted(cls.__name__ for cls in ch10.EXERCISES)
-    assert len(ch10.EXERCISES) >= 19
+test_every_exercise_is_tested_in_one_file = harness.every_exercise_tested(
+    ch10, SPECS, at_least=19)

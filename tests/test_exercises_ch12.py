@@ -9,11 +9,8 @@ mirror vector, Lambert's law, the Phong and Blinn-Phong terms, the attenuation p
 ambient occlusion next to a wall or in a trench is integrated numerically with scipy's ``quad``
 over the azimuth, not taken from its closed form.
 """
-import importlib
 import math
 import re
-import types
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -300,9 +297,7 @@ def same(a, b, form):
 #: The exercises this file tests; the chapter's other topics have files of their own
 #: (tests/test_exercises_ch12_*.py), and test_every_exercise_is_tested_in_one_file holds the
 #: union to the chapter's list.
-TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch12.EXERCISES
-                                              if cls.__name__ in SPECS),
-                              **{name: getattr(ch12, name) for name in SPECS})
+TOPIC = harness.topic(ch12, SPECS)
 
 globals().update(harness.common_tests(
     TOPIC, SPECS, GARBAGE, exercises, at_least=8, distinct=(30, 5),
@@ -311,18 +306,8 @@ test_mistakes_are_diagnosed = harness.mistakes_test(
     SPECS, exercises, same, key_seeds=SEEDS)
 
 
-def test_every_exercise_is_tested_in_one_file():
-    """The chapter's exercises are split over topic files: together they test every exercise
-    of ``ch12.EXERCISES``, each in exactly one file."""
-    files = sorted(Path(__file__).parent.glob("test_exercises_ch12_*.py"))
-    assert files
-    tested = list(SPECS)
-    for path in files:
-        tested += list(importlib.import_module(path.stem).SPECS)
-    assert sorted(tested) == sorted(cls.__name__ for cls in ch12.EXERCISES)
-    assert len(ch12.EXERCISES) >= 8
-
-
+test_every_exercise_is_tested_in_one_file = harness.every_exercise_tested(
+    ch12, SPECS, at_least=8)
 @pytest.mark.parametrize("name", SPECS)
 def test_right_answer_is_accepted(name):
     solve, form = SPECS[name]

@@ -10,10 +10,7 @@ course_lib.texturing, which the checkers call): bilinear samples with
 triangle and finding the point of the triangle under the pixel, OpenGL's wrap rules, and the
 mapping, mipmap and checkerboard formulas typed out below.
 """
-import importlib
 import math
-import types
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -297,9 +294,7 @@ GARBAGE = {"number": NUMBER_GARBAGE, "uv": UV_GARBAGE, "vector3": VECTOR3_GARBAG
 #: The chapter's exercises are split over topic files: this one tests those in SPECS
 #: (tests/test_exercises_ch14_*.py the others), and test_every_exercise_is_tested_in_one_file
 #: holds the union to the chapter's list.
-TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch14.EXERCISES
-                                              if cls.__name__ in SPECS),
-                              **{name: getattr(ch14, name) for name in SPECS})
+TOPIC = harness.topic(ch14, SPECS)
 exercises = harness.variants(TOPIC)
 
 
@@ -318,18 +313,8 @@ test_mistakes_are_diagnosed = harness.mistakes_test(
 test_right_answer_is_accepted = harness.right_answer_test(SPECS, exercises)
 
 
-def test_every_exercise_is_tested_in_one_file():
-    """Together the chapter's exercise test files test every exercise of ``ch14.EXERCISES``,
-    each in exactly one file."""
-    files = sorted(Path(__file__).parent.glob("test_exercises_ch14_*.py"))
-    assert files
-    tested = list(SPECS)
-    for path in files:
-        tested += list(importlib.import_module(path.stem).SPECS)
-    assert sorted(tested) == sorted(cls.__name__ for cls in ch14.EXERCISES)
-    assert len(ch14.EXERCISES) >= 20
-
-
+test_every_exercise_is_tested_in_one_file = harness.every_exercise_tested(
+    ch14, SPECS, at_least=20)
 def test_wrong_answers_get_teaching_feedback():
     """An answer no slip explains still says how to get it right."""
     for name in SPECS:

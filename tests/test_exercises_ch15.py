@@ -8,10 +8,7 @@ triangle), PyGLM's GLSL ``reflect`` and ``refract``, the closest point of a segm
 (shadow rays), an explicit enumeration of the ray tree, a halving loop for the BVH, and formulas
 typed out below; never with the course_lib.raytracing function the checker calls.
 """
-import importlib
 import math
-import types
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -182,9 +179,7 @@ GARBAGE = {"vector": ["x", [1, 2], [[1, 2, 3], [4, 5, 6]], [1, float("nan"), 2],
 
 #: This file tests the chapter's older topics (SPECS); tests/test_exercises_ch15_*.py the others,
 #: and test_every_exercise_is_tested_in_one_file holds the union to the chapter's list.
-TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch15.EXERCISES
-                                              if cls.__name__ in SPECS),
-                              **{name: getattr(ch15, name) for name in SPECS})
+TOPIC = harness.topic(ch15, SPECS)
 exercises = harness.variants(TOPIC)
 
 
@@ -330,12 +325,5 @@ def test_variants_are_many(name):
     assert len(answers) >= MIN_VARIANTS, (name, len(answers))
 
 
-def test_every_exercise_is_tested_in_one_file():
-    """Together the chapter's exercise test files test every exercise of ``ch15.EXERCISES``,
-    each in exactly one file (this file the older topics, tests/test_exercises_ch15_*.py the
-    newer ones)."""
-    tested = list(SPECS)
-    for path in sorted(Path(__file__).parent.glob("test_exercises_ch15_*.py")):
-        tested += list(importlib.import_module(path.stem).SPECS)
-    assert sorted(tested) == sorted(cls.__name__ for cls in ch15.EXERCISES)
-    assert len(ch15.EXERCISES) >= 8
+test_every_exercise_is_tested_in_one_file = harness.every_exercise_tested(
+    ch15, SPECS, at_least=8)

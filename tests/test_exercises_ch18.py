@@ -10,9 +10,6 @@ compositing, the opacity correction, the projection and the integration steps by
 typed out below (checked against scipy's matrix exponential and the closed form of Euler's
 drift), never with the course_lib function the checker calls.
 """
-import importlib
-from pathlib import Path
-import types
 import math
 
 import numpy as np
@@ -281,9 +278,7 @@ GARBAGE = {"number": NUMBER_GARBAGE, "points": POINTS_GARBAGE, "pairs": PAIRS_GA
 
 #: This file tests the chapter's older topics (SPECS); tests/test_exercises_ch18_*.py the others,
 #: and test_every_exercise_is_tested_in_one_file holds the union to the chapter's list.
-TOPIC = types.SimpleNamespace(EXERCISES=tuple(cls for cls in ch18.EXERCISES
-                                              if cls.__name__ in SPECS),
-                              **{name: getattr(ch18, name) for name in SPECS})
+TOPIC = harness.topic(ch18, SPECS)
 exercises = harness.variants(TOPIC)
 
 
@@ -461,12 +456,5 @@ def test_the_choices_all_come_up():
     assert len({early_termination(ch18.EarlyTermination(seed=seed))[0] for seed in MANY}) >= 5
 
 
-def test_every_exercise_is_tested_in_one_file():
-    """Together the chapter's exercise test files test every exercise of ``ch18.EXERCISES``,
-    each in exactly one file (this file the older topics, tests/test_exercises_ch18_*.py the
-    newer ones)."""
-    tested = list(SPECS)
-    for path in sorted(Path(__file__).parent.glob("test_exercises_ch18_*.py")):
-        tested += list(importlib.import_module(path.stem).SPECS)
-    assert sorted(tested) == sorted(cls.__name__ for cls in ch18.EXERCISES)
-    assert len(ch18.EXERCISES) >= 8
+test_every_exercise_is_tested_in_one_file = harness.every_exercise_tested(
+    ch18, SPECS, at_least=8)
