@@ -143,6 +143,11 @@ def execute_notebooks(python, notebooks, env, workers=2, prefix=()):
     return results
 
 
+def _ends(text, keep=1500):
+    """The first and the last `keep` characters of `text` (a kernel's own error comes first)."""
+    return text if len(text) <= 2 * keep else f"{text[:keep]}\n[...]\n{text[-keep:]}"
+
+
 def _failures(results, root):
     """A readable account of the notebooks that failed: notebook, cell, error, traceback."""
     lines = []
@@ -151,7 +156,7 @@ def _failures(results, root):
             name = Path(r["notebook"]).relative_to(root)
             lines += [f"--- {name}, cell {r.get('cell')}: {r.get('error')}",
                       textwrap.indent(r.get("source", ""), "    | ", lambda line: True),
-                      r.get("traceback", "")[-1500:]]
+                      _ends(r.get("traceback", ""))]
     return "\n".join(lines)
 
 
