@@ -6,7 +6,8 @@
 #                widget tests and nbval over notebooks/, solutions/ and exercises/
 #
 # Other targets: make exercises (rebuild exercises/ from solutions/), make notebooks (re-execute
-# every notebook and store its outputs), make benchmarks, make binder-dockerfile (the Dockerfile
+# every notebook and store its outputs), make benchmarks, make site (the course website and its
+# PDFs in build/site/html, from the stored notebooks), make binder-dockerfile (the Dockerfile
 # Binder builds), make clean (also removes build/runtime-venv, the tests' runtime-only venv).
 
 PYTHON ?= python3
@@ -18,7 +19,7 @@ PYTEST_ARGS ?=
 LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
 .PHONY: lab lecture screenshots test system-packages exercises notebooks benchmarks clean \
-        binder-dockerfile
+        binder-dockerfile site
 
 lab: $(STAMP)
 	@scripts/system-packages --warn-only --no-browser
@@ -55,6 +56,12 @@ exercises: $(STAMP)
 
 notebooks: $(STAMP)
 	$(BIN)/python -m course_lib.exercises.build --execute
+
+# the course website (Sphinx, myst-nb, the stored outputs) and its PDFs (headless chromium), in
+# build/site/html; website/build.py --serve shows it on http://127.0.0.1:8000
+site: $(STAMP)
+	@scripts/system-packages --site
+	$(BIN)/python website/build.py --pdf
 
 benchmarks: $(STAMP)
 	@scripts/system-packages
