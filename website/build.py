@@ -207,26 +207,15 @@ def _instructors_page(staging):
     section = re.sub(r"^###", "##", section, flags=re.M)
     install_end = readme.index("## The course")
     install = readme[readme.index("```sh"):install_end]
-    install = re.sub(r"^###", "###", install, flags=re.M)
     for image in sorted(set(re.findall(r"\]\((docs/[^)]+\.png)\)", section))):
         (staging / image).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(ROOT / image, staging / image)
     section = section.replace("](benchmarks/results.md)", "](speed.md)")
-    page = (section.rstrip() + "\n\n(run-the-course)=\n## Run the course\n\n" + install.strip()
-            + "\n\n## Publish this website\n\n" + PUBLISH + "\n")
+    page = (section.rstrip() + "\n\n(run-the-course)=\n## Run the course, and publish this site"
+            "\n\n" + install.strip() + "\n")
     (staging / "instructors.md").write_text(page)
     results = (ROOT / "benchmarks" / "results.md").read_text()
     (staging / "speed.md").write_text(results)
-
-
-PUBLISH = """\
-`make site` writes the whole site to `build/site/html/`: plain HTML, CSS, JavaScript, the
-pictures, a MathJax copy and the PDFs in `pdf/`. Nothing in it needs a server program or the
-internet, so any static host serves it as it is: copy the folder to a web server's document
-root, to an object-storage bucket with static hosting, or push it to a `gh-pages` branch for
-GitHub Pages (add an empty `.nojekyll` file, since Sphinx's folders start with `_`). To look at
-it locally, `python website/build.py --serve` (or `python -m http.server -d build/site/html`).
-"""
 
 
 def _label(chapter):

@@ -296,7 +296,12 @@ def test_screenshots_in_light_and_dark_mode(site, server, chromium, scheme):
         background = page.evaluate("getComputedStyle(document.body).backgroundColor")
         text = page.evaluate("getComputedStyle(document.querySelector('main p') || "
                              "document.body).color")
-        page.screenshot(path=str(ARTIFACTS / f"{name.replace('/', '-')}-{scheme}.png"))
+        shot = ARTIFACTS / f"{name.replace('/', '-')}-{scheme}.png"
+        page.screenshot(path=str(shot))
+        explorer = page.locator("figure:has(img.explorer-picture)")
+        if explorer.count():                    # and the first explorer's picture, whole
+            explorer.first.scroll_into_view_if_needed()
+            page.screenshot(path=str(shot.with_name(shot.stem + "-explorer.png")))
         page.close()
         assert theme == scheme, f"{name}: the page's theme is {theme}, the reader's {scheme}"
         if scheme == "dark":
