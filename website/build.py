@@ -171,6 +171,8 @@ def stage_notebook(source, target, folder, chapter, index, total):
         tags = cell.metadata.setdefault("tags", [])
         if "hide-input" not in tags and cell.source.strip():
             tags.append("hide-input")
+        if folder == "solutions" and "BEGIN SOLUTION" in cell.source:
+            tags.append("course-solution")      # shown unfolded: the code is the answer
         for output in cell.get("outputs", []):
             data = output.get("data", {})
             if WIDGET in data:

@@ -137,6 +137,8 @@ READ_PAGE = """() => {
                              || '')})),
         openCode: withInput.filter(c => !c.querySelector('details .cell_input')).length,
         codeCells: withInput.length,
+        solutionsShown: [...document.querySelectorAll('.tag_course-solution .cell_input')]
+                        .filter(el => el.checkVisibility()).length,
         binder: [...document.querySelectorAll('a.binder-link')].map(a => a.href),
         download: [...document.querySelectorAll('a.download')].map(a => a.getAttribute('href')),
         prev: !!document.querySelector('a.left-prev'),
@@ -200,6 +202,12 @@ def _check_notebook_page(where, source, seen):
     if seen["openCode"]:
         trouble.append(where + f"{seen['openCode']} of {seen['codeCells']} code cells cannot be "
                        "collapsed")
+    if source.parent.name == "solutions":       # the worked answers: shown, not folded
+        answers = [c for c in json.loads(source.read_text())["cells"]
+                   if c["cell_type"] == "code" and "BEGIN SOLUTION" in "".join(c["source"])]
+        if not answers or seen["solutionsShown"] != len(answers):
+            trouble.append(where + f"{seen['solutionsShown']} worked answers shown unfolded, "
+                           f"the notebook has {len(answers)}")
     relative = source.relative_to(ROOT).as_posix()
     if not any(link.endswith(f"urlpath=lab/tree/{relative}") for link in seen["binder"]):
         trouble.append(where + f"no Binder link opening {relative}: {seen['binder']}")
@@ -339,6 +347,36 @@ def test_pdfs_hold_every_figure_of_their_chapter(site):
         picture.save(ARTIFACTS / f"{stem}-page1.png")
         assert hi - lo > 128, f"{path.name}: the first page is blank"
         document.close()
+    assert _green_tick_printed(html / "pdf" / f"{LESSONS[0]}.pdf"), (
+        "the feedback's ✅ is not printed in colour: an empty box (no emoji font; "
+        "scripts/system-packages installs fonts-noto-color-emoji)")
     course = PdfReader(str(html / "pdf" / "course.pdf"))
     assert len(course.pages) > total, "course.pdf holds fewer pages than its chapters"
     assert len(course.outline) >= len(LESSONS)
+
+
+def _green_tick_printed(path):
+    """Whether the first ✅ of the PDF at `path` is drawn green (a glyph, not an empty box)."""
+    import pypdfium2
+
+    document = pypdfium2.PdfDocument(str(path))
+    try:
+        for page in document:
+            text = page.get_textpage()
+            index = text.get_text_range().find("\u2705")
+            if index < 0:
+                continue
+            left, bottom, right, top = text.get_charbox(index)
+            scale = 3
+            picture = page.render(scale=scale).to_pil().convert("RGB")
+            box = picture.crop((int(left * scale), int(picture.height - top * scale),
+                                int(right * scale) + 1, int(picture.height - bottom * scale) + 1))
+            pixels = box.load()
+            green = sum(1 for x in range(box.width) for y in range(box.height)
+                        if pixels[x, y][1] > pixels[x, y][0] + 30
+                        and pixels[x, y][1] > pixels[x, y][2] + 30)
+            return green > 0.1 * box.width * box.height
+        raise AssertionError(f"{path.name}: no ✅ found (the solutions' feedback), or it was "
+                             "printed as a box without an emoji font")
+    finally:
+        document.close()
