@@ -31,7 +31,6 @@ from __future__ import annotations
 
 import argparse
 import functools
-import hashlib
 import http.server
 import os
 import re
@@ -269,22 +268,10 @@ def _landing(staging, counts):
 
 def mathjax():
     """MathJax's es5 folder, installed from npm at the version website/package-lock.json locks."""
-    es5 = NPM / "node_modules" / "mathjax" / "es5"
-    lock = (HERE / "package-lock.json").read_bytes()
-    stamp = NPM / ".lock-digest"
-    digest = hashlib.sha256(lock).hexdigest()
-    if not (es5 / "tex-mml-chtml.js").is_file() or not stamp.is_file() \
-            or stamp.read_text() != digest:
-        NPM.mkdir(parents=True, exist_ok=True)
-        for name in ("package.json", "package-lock.json"):
-            shutil.copy2(HERE / name, NPM / name)
-        npm = shutil.which("npm")
-        if npm is None:
-            raise SystemExit("website/build.py: npm is needed once, to install MathJax from the "
-                             "npm registry (Debian: apt-get install npm)")
-        subprocess.run([npm, "ci", "--no-audit", "--no-fund", "--loglevel=error"],
-                       cwd=NPM, check=True)
-        stamp.write_text(digest)
+    done = subprocess.run([sys.executable, str(ROOT / "scripts" / "npm-ci"), str(HERE), str(NPM)],
+                          check=True, stdout=subprocess.PIPE, text=True)
+    es5 = Path(done.stdout.strip()) / "mathjax" / "es5"
+    assert (es5 / "tex-mml-chtml.js").is_file(), f"no MathJax in {es5}"
     return es5
 
 
