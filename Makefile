@@ -8,7 +8,8 @@
 # Other targets: make exercises (rebuild exercises/ from solutions/), make notebooks (re-execute
 # every notebook and store its outputs), make benchmarks, make site (the course website and its
 # PDFs in build/site/html, from the stored notebooks), make binder-dockerfile (the Dockerfile
-# Binder builds), make clean (also removes build/runtime-venv, the tests' runtime-only venv).
+# Binder builds), make hub-image (a JupyterHub's single-user image, hub/README.md), make clean
+# (also removes build/runtime-venv, the tests' runtime-only venv).
 
 PYTHON ?= python3
 VENV   ?= .venv
@@ -19,7 +20,7 @@ PYTEST_ARGS ?=
 LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
 .PHONY: lab lecture screenshots test system-packages exercises notebooks benchmarks clean \
-        binder-dockerfile site
+        binder-dockerfile site hub-image
 
 lab: $(STAMP)
 	@scripts/system-packages --warn-only --no-browser
@@ -56,6 +57,14 @@ exercises: $(STAMP)
 
 notebooks: $(STAMP)
 	$(BIN)/python -m course_lib.exercises.build --execute
+
+# the single-user image of a class's JupyterHub (hub/README.md): repo2docker with the course in
+# /srv/course, outside the home folder the hub mounts each student's volume over, made read-only
+# by postBuild; needs a container engine. IMAGE=registry/name:tag; PUSH=1 pushes it too
+IMAGE ?= graphics-course:latest
+hub-image: $(STAMP)
+	$(BIN)/repo2docker --no-run --user-id 1000 --user-name jovyan --target-repo-dir /srv/course \
+	  --image-name $(IMAGE) $(if $(PUSH),--push,) .
 
 # the course website (Sphinx, myst-nb, the stored outputs) and its PDFs (headless chromium), in
 # build/site/html; website/build.py --serve shows it on http://127.0.0.1:8000

@@ -58,7 +58,7 @@ def test_environment_yml_lists_the_same_packages_as_pyproject():
     project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
     wanted = dict(_requirement(r) for r in project["dependencies"])
     extras = project["optional-dependencies"]
-    for r in extras["test"]:              # course_lib[site] in the test extra: the site extra
+    for r in extras["test"]:          # course_lib[site] in the test extra: the site extra, etc.
         self_reference = re.fullmatch(r"course_lib\[(\w+)\]", r.strip())
         wanted.update(_requirement(x) for x in (extras[self_reference.group(1)]
                                                 if self_reference else [r]))
