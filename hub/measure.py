@@ -92,7 +92,6 @@ def main(argv=None):
             page = page[:page.index(start) + len(start)] + "\n" + text + "\n" + \
                 page[page.index(end):]
             target.write_text(page)
-        (ROOT / "hub" / "measured.json").write_text(json.dumps(results, indent=1) + "\n")
 
 
 if __name__ == "__main__":

@@ -528,6 +528,7 @@ def test_zz_everything_stops_cleanly_and_the_figures(classroom):
     memory = {name: (*sessions[name]["server_mib"], sessions[name]["probe"]["peak_mib"])
               for name in STUDENTS}
     assert len({sessions[name]["server_pid"] for name in STUDENTS}) == len(STUDENTS)
+    hub_alone = _rss_mib(hub.process.pid)[0]
     pids = hub.stop()
     assert hub.process.returncode is not None
     deadline = time.monotonic() + 30
@@ -538,7 +539,8 @@ def test_zz_everything_stops_cleanly_and_the_figures(classroom):
     assert not alive, f"still running after the hub stopped: {alive}"
     leftovers = subprocess.run(["pgrep", "-f", str(hub.folder)], capture_output=True, text=True)
     assert leftovers.stdout.strip() == "", f"processes of the hub left: {leftovers.stdout}"
-    print(f"\nhub start-up: {hub.startup_seconds:.1f} s; per student after {LESSON} ran, "
+    print(f"\nhub start-up: {hub.startup_seconds:.1f} s, the hub process {hub_alone:.0f} MiB; "
+          f"per student after {LESSON} ran, "
           "resident MiB of the server alone / the server with its kernel, kernel peak MiB: "
           + ", ".join(f"{n}: {server:.0f} / {total:.0f}, {peak:.0f}"
                       for n, (server, total, peak) in memory.items())

@@ -597,3 +597,13 @@ def test_a_temporary_folder_of_another_user_is_refused(tmp_path, monkeypatch):
                       "another user.*COURSE_PROGRESS_FILE"):
         progress.record_exam(record(8))
     assert list((tmp_path / f"graphics-course-{me}").iterdir()) == []
+
+
+def test_the_report_of_hints_without_a_checked_answer(tmp_path):
+    """A student who asked for a hint and has not checked an answer yet (found by running the
+    start page after an exercise notebook: a ZeroDivisionError): the chapter shows its hint
+    and no share of first-try answers."""
+    progress.record_event("hint", key="ch03.ComposeMatrix2D", seed=0, n=1)
+    report = progress.progress_report()
+    assert "**No mock exam taken yet**" in report
+    assert "| 3 | 1 | 0 | 0 | — | 1 |" in report, report

@@ -242,8 +242,10 @@ def progress_report(path=None):
             agg[0] += 1
         for ch, (kinds, variants, solved, first_try, hints) in sorted(
                 per.items(), key=lambda item: (item[0] is None, item[0] or 0)):
+            # a chapter whose exercises were only opened for hints has no answer checked yet
+            share = f"{100 * first_try / variants:.0f}%" if variants else "—"
             lines.append(f"| {ch if ch is not None else '?'} | {kinds} | {variants} | {solved} "
-                         f"| {100 * first_try / variants:.0f}% | {hints} |")
+                         f"| {share} | {hints} |")
         weak = weakest_topics(events, n=3)
         if weak:
             lines += ["", "**Topics to practise:** " + ", ".join(
