@@ -212,6 +212,10 @@ def _instructors_page(staging):
         (staging / image).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(ROOT / image, staging / image)
     section = section.replace("](benchmarks/results.md)", "](speed.md)")
+    section = section.replace("](hub/README.md)", "](hub.md)").replace("](hub/sizing.md)",
+                                                                    "](sizing.md)")
+    for name, page in (("README.md", "hub.md"), ("sizing.md", "sizing.md")):
+        (staging / page).write_text((ROOT / "hub" / name).read_text())
     page = (section.rstrip() + "\n\n(run-the-course)=\n## Run the course, and publish this site"
             "\n\n" + install.strip() + "\n")
     (staging / "instructors.md").write_text(page)
@@ -261,7 +265,7 @@ def _landing(staging, counts):
         toc("Solutions", [f"{_label(c)}: solutions <solutions/{c['stem']}>"
                           for c in chapters() if "solutions" in c["has"]]),
         toc("Exam", ["Mock exam <notebooks/mock_exam>"]),
-        toc("For instructors", ["instructors", "speed"]),
+        toc("For instructors", ["instructors", "hub", "sizing", "speed"]),
     ]
     (staging / "index.md").write_text("\n".join(page))
 
