@@ -144,6 +144,20 @@ def free_port():
         return s.getsockname()[1]
 
 
+def _naming(text):
+    """The pids of the processes whose command line contains `text` (as `pgrep -f`)."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit() and int(entry.name) != os.getpid():
+            try:
+                if text in (entry / "cmdline").read_bytes().replace(b"\0", b" ").decode(
+                        errors="replace"):
+                    found.append(int(entry.name))
+            except OSError:                      # ended meanwhile, or not ours to read
+                pass
+    return found
+
+
 def _course_files():
     """sha256 of every file of the installed course (course_lib and the notebooks)."""
     files = [p for folder in ("course_lib", "notebooks", "exercises", "solutions")
@@ -542,9 +556,7 @@ def test_zz_everything_stops_cleanly_and_the_figures(classroom):
                     alive.append(p)
             except OSError:                      # gone
                 pass
-        named = subprocess.run(["pgrep", "-f", str(hub.folder)], capture_output=True,
-                               text=True).stdout.split()
-        return alive + [int(p) for p in named if int(p) not in alive]
+        return alive + [p for p in _naming(str(hub.folder)) if p not in alive]
 
     deadline = time.monotonic() + 60          # servers shut their kernels down as they stop
     while running() and time.monotonic() < deadline:
