@@ -193,12 +193,12 @@ class Hub:
         self.token = secrets.token_hex(16)
         self.homes = folder / "homes"
         self.process = None
-        values = yaml.safe_load((ROOT / "hub" / "values.yaml").read_text())["hub"]
-        self.instructor = values["config"]["Authenticator"]["admin_users"][0]
+        self.values = yaml.safe_load((ROOT / "hub" / "values.yaml").read_text())["hub"]
+        self.instructor = self.values["config"]["Authenticator"]["admin_users"][0]
         self.users = [*STUDENTS, self.instructor]
 
     def config(self, proxy):
-        values = yaml.safe_load((ROOT / "hub" / "values.yaml").read_text())["hub"]
+        values = self.values
         lines = ["c = get_config()  # noqa"]
         for section, settings in values["config"].items():          # hub.config, as z2jh does
             for key, value in settings.items():

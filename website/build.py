@@ -427,7 +427,8 @@ def main(argv=None):
     args = parser.parse_args(argv)
     started = time.monotonic()
     counts = stage()
-    print(f"staged {sum(1 for _ in SRC.rglob('*.ipynb')) // 2} pages, "
+    pages = sum(1 for folder in FOLDERS for _ in (SRC / folder).glob("*.ipynb"))
+    print(f"staged {pages} pages, "
           f"{sum(counts.values())} explorer pictures ({time.monotonic() - started:.1f} s)")
     seconds = build()
     print(f"sphinx built {HTML} in {seconds:.1f} s")
