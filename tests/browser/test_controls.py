@@ -43,6 +43,11 @@ EXPECTED = {
         "none", "the full image is already shown once the sliders rest"),
     ("SurfaceExplorer", "toggles|Bézier/B-spline/NURBS|1", "NURBS"): (
         "text", "with every weight 1 (the default) a NURBS patch is its B-spline patch"),
+    ("FlowTopologyExplorer", "toggles|Euler/RK2/RK4|1", "RK2"): (
+        "text", "RK2 and RK4 trace the same seed line to within a pixel at the default step "
+        "(on the double gyre their ends are 5e-5 apart): the text names the method"),
+    ("FlowTopologyExplorer", "toggles|Euler/RK2/RK4|1", "RK4"): (
+        "text", "as for RK2: the two fourth- and second-order lines coincide on screen"),
     ("MockExamWidget", "textarea||1", None): (
         "none", "an answer is read when it is submitted"),
     ("MockExamWidget", "number|seed|1", None): (
