@@ -34,7 +34,7 @@ lecture: $(STAMP)
 
 test: $(STAMP)
 	@scripts/system-packages
-	$(BIN)/python -m pytest -n 2 --dist loadscope $(PYTEST_ARGS)
+	$(BIN)/python -m pytest -n 2 --dist loadscope --no-loadscope-reorder $(PYTEST_ARGS)
 
 $(STAMP): pyproject.toml
 	@scripts/system-packages --python-only

@@ -11,7 +11,6 @@ import re
 import time
 
 from .lab import drag_on_canvas
-from .pixels import changed_pixels
 
 # A control inside a view; toggle buttons of a ToggleButtons group are one control.
 _ENUMERATE = r"""(root) => {
@@ -98,30 +97,94 @@ def element(view, index):
     return view.locator(f"[data-course-control='{index}']")
 
 
+PICTURES = ".jupyter-matplotlib-canvas-div canvas:first-child, img.widget-image"
+
+# The pixels of every picture of a view, read in the page and kept there: a figure's canvas as
+# drawn (its backing store) and an image widget at its own size, each over white, with the view's
+# text. Python holds a handle; two snapshots are compared in the page. A snapshot costs a few
+# milliseconds where an element screenshot (scroll, wait for stable, capture the compositor's
+# frame, encode a PNG, decode it in Python) cost 280 ms here, and the controls test takes a few
+# hundred snapshots per lesson.
+_SNAPSHOT = r"""(root, drop) => {
+  const store = window.__courseSnapshots ||
+    (window.__courseSnapshots = {next: 0, kept: new Map()});
+  for (const id of drop) store.kept.delete(id);
+  const pictures = [];
+  for (const el of root.querySelectorAll('%s')) {
+    const img = el.tagName === 'IMG';
+    const w = img ? el.naturalWidth : el.width, h = img ? el.naturalHeight : el.height;
+    if (!w || !h || (img && !el.complete)) { pictures.push({w: 0, h: 0, data: null}); continue; }
+    const c = new OffscreenCanvas(w, h);
+    const ctx = c.getContext('2d', {willReadFrequently: true});
+    ctx.fillStyle = '#fff';
+    ctx.fillRect(0, 0, w, h);
+    ctx.drawImage(el, 0, 0, w, h);
+    pictures.push({w, h, data: ctx.getImageData(0, 0, w, h).data});
+  }
+  const id = store.next++;
+  store.kept.set(id, pictures);
+  return [id, root.innerText];
+}""" % PICTURES
+
+# Pixels of which a colour channel moved by more than `level`, summed over the pictures the two
+# snapshots have in common (each pair cropped to the smaller).
+_CHANGE = r"""([a, b, level]) => {
+  const kept = window.__courseSnapshots.kept;
+  const one = kept.get(a), two = kept.get(b);
+  let changed = 0;
+  for (let k = 0; k < Math.min(one.length, two.length); k++) {
+    const p = one[k], q = two[k];
+    const w = Math.min(p.w, q.w), h = Math.min(p.h, q.h);
+    for (let y = 0; y < h; y++) {
+      let i = 4 * y * p.w, j = 4 * y * q.w;
+      for (let x = 0; x < w; x++, i += 4, j += 4) {
+        const d = Math.max(Math.abs(p.data[i] - q.data[j]),
+                           Math.abs(p.data[i + 1] - q.data[j + 1]),
+                           Math.abs(p.data[i + 2] - q.data[j + 2]));
+        if (d > level) changed++;
+      }
+    }
+  }
+  return changed;
+}"""
+
+_dropped = []          # (page, id) of snapshots Python no longer holds: freed by the next one
+
+
+class Pictures:
+    """A snapshot's pictures, kept in the page; freed there once Python drops this handle."""
+
+    def __init__(self, page, ident):
+        self.page, self.id = page, ident
+
+    def __del__(self):
+        _dropped.append((self.page, self.id))
+
+
 def pictures(view):
     """The figures of a view: ipympl canvases and image widgets (rendered 3D views)."""
-    return view.locator(".jupyter-matplotlib-canvas-div canvas:first-child, img.widget-image")
+    return view.locator(PICTURES)
 
 
 def snapshot(view):
-    """PNG bytes of every picture of the view, and the view's text (its panels and read-outs)."""
-    figures = pictures(view)
-    images = [figures.nth(k).screenshot(animations="disabled") for k in range(figures.count())]
-    return images, view.inner_text()
+    """The pixels of every picture of the view (a :class:`Pictures` handle) and the view's text
+    (its panels and read-outs)."""
+    page = view.page
+    drop = [ident for p, ident in _dropped if p is page]
+    _dropped[:] = [(p, ident) for p, ident in _dropped if p is not page and not p.is_closed()]
+    ident, text = view.evaluate(_SNAPSHOT, drop)
+    return Pictures(page, ident), text
 
 
-#: A pixel has changed when a colour channel moved by more than this (the screenshots are
-#: lossless, so this only ignores nothing-but-rounding; a 5 % change of a shading coefficient
+#: A pixel has changed when a colour channel moved by more than this (the pixels are read
+#: losslessly, so this only ignores nothing-but-rounding; a 5 % change of a shading coefficient
 #: moves a lit pixel by about 12 levels).
 CHANGE_LEVEL = 6
 
 
 def picture_change(before, after):
-    """Pixels that changed between two snapshots' pictures (summed over the figures), leaving
-    out a 2-pixel border: an image scaled to a fractional height lands on the page with its
-    first row half a pixel up or down from one picture to the next."""
-    return sum(changed_pixels(a, b, threshold=CHANGE_LEVEL, border=2)
-               for a, b in zip(before[0], after[0]))
+    """Pixels that changed between two snapshots' pictures (summed over the figures)."""
+    return before[0].page.evaluate(_CHANGE, [before[0].id, after[0].id, CHANGE_LEVEL])
 
 
 def wait_for_change(view, before, min_pixels, timeout=6.0):
@@ -137,7 +200,7 @@ def wait_for_change(view, before, min_pixels, timeout=6.0):
         # steady: the same picture twice in a row (a preview followed by the full image, a
         # drop followed by a full ray cast)
         for _ in range(40):
-            time.sleep(0.25)
+            time.sleep(0.15)
             again = snapshot(view)
             if picture_change(current, again) == 0:
                 break
@@ -180,7 +243,7 @@ def operate(view, control):
         handle.focus()
         for _ in range(5):
             page.keyboard.press(key)
-            time.sleep(0.05)
+            time.sleep(0.02)
 
         def undo():
             handle.focus()
@@ -188,7 +251,7 @@ def operate(view, control):
                 if readout.inner_text() == start:
                     break
                 page.keyboard.press(back)
-                time.sleep(0.05)
+                time.sleep(0.02)
             return f"slider back to {readout.inner_text()}"
         return f"slider {start} -> {readout.inner_text()}", undo
     if kind in ("button", "toggle"):

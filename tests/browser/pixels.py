@@ -1,4 +1,5 @@
-"""Comparing screenshots: how many pixels changed, and where."""
+"""Comparing pictures (screenshots, or pixels read in the page): how many pixels changed, and
+where."""
 import io
 
 import numpy as np
@@ -13,7 +14,12 @@ def load(png):
 def changed_pixels(before, after, threshold=24, border=0):
     """The number of pixels whose colour changed by more than `threshold` (any channel),
     `border` pixels at each edge left out."""
-    a, b = load(before), load(after)
+    return changed_pixels_of(load(before), load(after), threshold, border)
+
+
+def changed_pixels_of(a, b, threshold=24, border=0):
+    """:func:`changed_pixels` of two RGB arrays (height, width, 3), cropped to the smaller."""
+    a, b = np.asarray(a, np.int16), np.asarray(b, np.int16)
     if a.shape != b.shape:
         height, width = min(a.shape[0], b.shape[0]), min(a.shape[1], b.shape[1])
         a, b = a[:height, :width], b[:height, :width]
@@ -27,10 +33,5 @@ def changed_pixels_in(before, after, top, bottom, threshold=24):
     a, b = load(before), load(after)
     height = min(a.shape[0], b.shape[0])
     rows = slice(int(top * height), int(bottom * height))
-    return changed_pixels(_png(a[rows]), _png(b[rows]), threshold)
+    return changed_pixels_of(a[rows], b[rows], threshold)
 
-
-def _png(array):
-    buffer = io.BytesIO()
-    Image.fromarray(array.astype(np.uint8)).save(buffer, format="png")
-    return buffer.getvalue()
