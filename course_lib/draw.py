@@ -29,6 +29,7 @@ __all__ = [
     "setup_axes_3d",
     "shade",
     "show",
+    "text_marker",
 ]
 
 #: The colours of the x, y and z axes in every figure (red, green, blue, as in most 3D tools).
@@ -401,6 +402,58 @@ def set_mesh_3d(collection, vertices, faces, facecolors=None):
     collection.set_verts([v[f] for f in faces])
     if facecolors is not None:
         collection.set_facecolor(facecolors)
+
+
+def text_marker(text, resolution=1000.0):
+    r"""A marker shaped like `text` (as matplotlib's ``marker="$text$"``), its glyph outlines
+    flattened into polygons.
+
+    A scatter of mathtext markers is slow to redraw: before drawing a collection of one path,
+    matplotlib measures the path's extent, and for a glyph's Bézier outline that means solving
+    for the extrema of every curve (4-5 ms per collection here; the isoline explorer's 14
+    case-number collections spent most of an update on it). The same outlines as polygons are
+    measured by a min and a max, and draw the same pixels: 14 numbers redrawn in 3.8 ms
+    instead of 39, no pixel more than 24 levels apart (measured 2026-12-06).
+
+    Parameters
+    ----------
+    text : str
+        Mathtext without the dollars, e.g. ``"12"``.
+    resolution : float
+        The curves are flattened at this many units per marker size: 1000 keeps every segment
+        far below a pixel at any marker size a figure uses.
+
+    Returns
+    -------
+    matplotlib.path.Path
+        Closed polygons only (MOVETO, LINETO, CLOSEPOLY), centred, its larger side 1 long (the
+        scale of matplotlib's text markers); pass it as ``marker=``.
+
+    Examples
+    --------
+    >>> path = text_marker("8")
+    >>> from matplotlib.path import Path
+    >>> sorted(set(path.codes.tolist())) == [Path.MOVETO, Path.LINETO, Path.CLOSEPOLY]
+    True
+    >>> extent = path.get_extents()
+    >>> round(float(max(extent.width, extent.height)), 3)
+    1.0
+    """
+    from matplotlib.markers import MarkerStyle
+    from matplotlib.path import Path
+    from matplotlib.transforms import Affine2D
+
+    if not isinstance(text, str) or not text.strip():
+        raise ValueError(f"text must be a non-empty string (mathtext without the dollars), got "
+                         f"{text!r}")
+    marker = MarkerStyle(f"${text}$")
+    outline = marker.get_path().transformed(marker.get_transform()
+                                            + Affine2D().scale(resolution))
+    polygons = [p for p in outline.to_polygons(closed_only=True) if len(p) >= 3]
+    vertices = np.concatenate(polygons) / resolution
+    codes = np.concatenate([[Path.MOVETO] + [Path.LINETO] * (len(p) - 2) + [Path.CLOSEPOLY]
+                            for p in polygons])
+    return Path(vertices, codes.astype(Path.code_type))
 
 
 class Blitter:

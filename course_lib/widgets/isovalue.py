@@ -204,25 +204,40 @@ def _level_step(field):
 def _draw_case_table(ax):
     """The 16 cases as small tiles (4 x 4): corners, the table's segments and the number.
 
+    Drawn as a few collections, not one artist per line, dot and number: the explorer's tile
+    highlights lie under the table, so the table is redrawn over them at every update (the
+    blitter's overlays), and 100-odd artists cost about 5 ms of every frame.
+
     Returns the tiles' squares (16, 5, 2) in the legend axes' coordinates."""
+    from matplotlib.collections import LineCollection
+
     mids = 0.5 * (CORNERS + np.roll(CORNERS, -1, axis=0))        # edge k's midpoint
-    tiles = []
+    tiles, solid, dashed, dots, filled = [], [], [], [], []
     for case in range(16):
         col, row = case % 4, 3 - case // 4
         origin = np.array([col * 1.5, row * 1.5])
         tiles.append(origin + np.vstack([CORNERS, CORNERS[:1]]))
-        ax.plot(*(origin + np.vstack([CORNERS, CORNERS[:1]])).T, color="0.6", lw=0.8)
-        for k in range(4):
-            filled = (case >> k) & 1
-            ax.plot(*(origin + CORNERS[k]), "o", ms=4, mec="0.15",
-                    mfc="0.15" if filled else "white", mew=0.8)
-        for a, b in scivis.SQUARE_TABLE[case]:
-            ax.plot(*(origin + np.array([mids[a], mids[b]])).T, color="#1f5fbf", lw=1.6)
-        for a, b in scivis.SQUARE_SADDLES_CENTRE_ABOVE.get(case, ()):
-            ax.plot(*(origin + np.array([mids[a], mids[b]])).T, "--", color="#1f5fbf", lw=1)
-        ax.text(*(origin + [0.5, 0.5]), str(case), ha="center", va="center",
-                fontsize=_style.ANNOTATION,
-                color="0.1", weight="bold")
+        solid += [origin + np.array([mids[a], mids[b]]) for a, b in scivis.SQUARE_TABLE[case]]
+        dashed += [origin + np.array([mids[a], mids[b]])
+                   for a, b in scivis.SQUARE_SADDLES_CENTRE_ABOVE.get(case, ())]
+        dots += [origin + CORNERS[k] for k in range(4)]
+        filled += [bool((case >> k) & 1) for k in range(4)]
+    ax.add_collection(LineCollection(tiles, colors="0.6", linewidths=0.8))
+    ax.add_collection(LineCollection(solid, colors="#1f5fbf", linewidths=1.6))
+    ax.add_collection(LineCollection(dashed, colors="#1f5fbf", linewidths=1.0,
+                                     linestyles="--"))
+    dots, filled = np.array(dots), np.array(filled)
+    ax.scatter(*dots.T, s=4 ** 2, c=np.where(filled, "0.15", "white"), edgecolors="0.15",
+               linewidths=0.8, zorder=2)
+    # the case numbers: bold digits as flattened markers (draw.text_marker), as tall as
+    # annotation-sized text (a marker's size is its larger side, the width of two digits)
+    digit = 0.75 * _style.ANNOTATION
+    for case in range(16):
+        col, row = case % 4, 3 - case // 4
+        number = draw.text_marker(rf"\mathbf{{{case}}}")
+        ax.scatter([col * 1.5 + 0.5], [row * 1.5 + 0.5], marker=number,
+                   s=(digit / number.get_extents().height) ** 2, color="0.1", linewidths=0,
+                   zorder=3)
     ax.set(xlim=(-0.3, 5.8), ylim=(-0.3, 5.8), aspect="equal")
     ax.set_axis_off()
     ax.set_title("the 16 cases (dot = above)\ndashed: the saddles'\nother pairing",
@@ -281,11 +296,12 @@ class IsolineExplorer(Explorer):
         (self.above,) = ax.plot([], [], "o", ms=5, color="0.1", zorder=6)
         (self.below,) = ax.plot([], [], "o", ms=5, mfc="white", mec="0.1", mew=0.9, zorder=6)
         # the case numbers as markers shaped like digits, one collection per case: far cheaper
-        # to redraw than hundreds of text artists (each text is laid out on every blit). A
+        # to redraw than hundreds of text artists (each text is laid out on every blit), and
+        # their outlines flattened (draw.text_marker: a Bézier glyph cost 4-5 ms per redraw). A
         # marker's size is its glyphs' height (one digit) or width (two): 0.75 of the
         # annotation size gives digits as tall as those of annotation-sized text.
         digit = 0.75 * _style.ANNOTATION
-        self.labels = {k: ax.scatter(np.zeros(0), np.zeros(0), marker=f"${k}$",
+        self.labels = {k: ax.scatter(np.zeros(0), np.zeros(0), marker=draw.text_marker(str(k)),
                                      s=(digit ** 2 if k < 10 else (1.5 * digit) ** 2),
                                      color="#7b1fa2", linewidths=0,
                                      zorder=7) for k in range(1, 15)}
