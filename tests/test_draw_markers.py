@@ -32,9 +32,7 @@ def test_the_polygons_follow_the_glyph_curves(text):
     marker = MarkerStyle(f"${text}$")
     outline = marker.get_path().transformed(marker.get_transform())
     t = np.linspace(0, 1, 9)
-    samples = np.vstack([curve.point_at_t(t) if hasattr(curve, "point_at_t") else
-                         np.array([curve.point_at_t(u) for u in t])
-                         for curve, _ in outline.iter_bezier()])
+    samples = np.vstack([curve(t) for curve, _ in outline.iter_bezier()])
     flat = draw.text_marker(text)
     edges = MultiLineString([np.vstack([p, p[:1]]) for p in flat.to_polygons()])
     distances = [edges.distance(point) for point in MultiPoint(samples).geoms]
@@ -69,3 +67,16 @@ def test_holes_stay_holes():
 def test_bad_text_is_refused_by_name(bad):
     with pytest.raises(ValueError, match="text must be a non-empty string"):
         draw.text_marker(bad)
+
+
+def test_a_list_is_refused_by_name_too():
+    # checked before the cache, which would fail on an unhashable argument
+    with pytest.raises(ValueError, match="text must be a non-empty string"):
+        draw.text_marker(["1"])
+
+
+def test_the_shared_path_cannot_be_changed():
+    path = draw.text_marker("3")
+    assert draw.text_marker("3") is path
+    with pytest.raises(AttributeError):
+        path.vertices = path.vertices * 2

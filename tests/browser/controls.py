@@ -97,6 +97,7 @@ def element(view, index):
     return view.locator(f"[data-course-control='{index}']")
 
 
+#: The figures of a view: ipympl canvases and image widgets (rendered 3D views).
 PICTURES = ".jupyter-matplotlib-canvas-div canvas:first-child, img.widget-image"
 
 # The pixels of every picture of a view, read in the page and kept there: a figure's canvas as
@@ -159,11 +160,6 @@ class Pictures:
 
     def __del__(self):
         _dropped.append((self.page, self.id))
-
-
-def pictures(view):
-    """The figures of a view: ipympl canvases and image widgets (rendered 3D views)."""
-    return view.locator(PICTURES)
 
 
 def snapshot(view):

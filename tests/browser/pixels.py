@@ -11,20 +11,17 @@ def load(png):
                       .convert("RGB"), dtype=np.int16)
 
 
-def changed_pixels(before, after, threshold=24, border=0):
-    """The number of pixels whose colour changed by more than `threshold` (any channel),
-    `border` pixels at each edge left out."""
-    return changed_pixels_of(load(before), load(after), threshold, border)
+def changed_pixels(before, after, threshold=24):
+    """The number of pixels whose colour changed by more than `threshold` (any channel)."""
+    return changed_pixels_of(load(before), load(after), threshold)
 
 
-def changed_pixels_of(a, b, threshold=24, border=0):
+def changed_pixels_of(a, b, threshold=24):
     """:func:`changed_pixels` of two RGB arrays (height, width, 3), cropped to the smaller."""
     a, b = np.asarray(a, np.int16), np.asarray(b, np.int16)
     if a.shape != b.shape:
         height, width = min(a.shape[0], b.shape[0]), min(a.shape[1], b.shape[1])
         a, b = a[:height, :width], b[:height, :width]
-    if border:
-        a, b = a[border:-border, border:-border], b[border:-border, border:-border]
     return int((np.abs(a - b).max(axis=-1) > threshold).sum())
 
 
