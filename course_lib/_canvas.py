@@ -16,6 +16,10 @@ four things of ipympl 0.10 / matplotlib's web canvas, each measured in JupyterLa
   ``<img>``; a small front-end module replaces that handler with ``createImageBitmap`` (decoded
   off the main thread) and keeps frames in order.
 
+The page's module also keeps the pictures :mod:`course_lib._prefetch` draws ahead and paints
+one as soon as the explorer's controls reach its values; a kernel frame carries the values it
+shows, and one the page has already moved past is not painted.
+
 Only the explorers' figures are changed; a figure a student makes with ``%matplotlib widget``
 keeps ipympl's own path, except for the front-end handler, which is ipympl's for every canvas
 of the page once an explorer has been shown.
@@ -144,6 +148,9 @@ def _whole_frames(canvas):
             y0, y1, x0, x1 = rows[0], rows[-1] + 1, cols[0], cols[-1] + 1
             pixels = pixels[y0:y1, x0:x1]
             canvas._course_place = (int(x0), int(y0))
+        prefetch = getattr(canvas, "_course_prefetch", None)
+        if prefetch is not None and prefetch.decoder is not None:
+            prefetch.frame_sent(canvas._course_last)
         if pixels[..., 3].min() == 255:
             pixels = pixels[..., :3]
         with BytesIO() as png:
@@ -168,16 +175,24 @@ def _placed_frames(canvas):
         # the page saw it, gets none)
         canvas._course_regions = False
         canvas._course_last = None
+        prefetch = getattr(canvas, "_course_prefetch", None)
+        if prefetch is not None:
+            prefetch.decoder = None              # until the new page says it keeps pictures
         if getattr(canvas, "comm", None) is not None and \
                 getattr(canvas, "_course_frame_decoder", None) is None:
             canvas._course_frame_decoder = _frame_decoder(canvas)
 
     def send(data):
         place, canvas._course_place = canvas._course_place, None
-        if place is None:
+        prefetch = getattr(canvas, "_course_prefetch", None)
+        content = {"type": "binary"}
+        if prefetch is not None and prefetch.decoder is not None:
+            content.update(prefetch.message())       # the values the frame shows
+        if place is not None:
+            content["x"], content["y"] = place
+        if len(content) == 1:
             return send_binary(data)
-        canvas.send({"data": json.dumps({"type": "binary", "x": place[0], "y": place[1]})},
-                    buffers=[data])
+        canvas.send({"data": json.dumps(content)}, buffers=[data])
     canvas.on_msg(new_page)
     canvas.send_binary = send
 
@@ -190,6 +205,24 @@ def _initialized(content):
 #: The front-end module (ES module, run by anywidget in the page when the model is created):
 #: it replaces ipympl's handler of a received frame, once for every canvas of the page.
 _DECODER_ESM = r"""
+// pictures decoded at most at once per explorer (each a few hundred kB), and kept in all
+const KEEP_DECODED = 16, KEEP = 400;
+const canon = (v) => (typeof v === 'number' ? Number(v.toPrecision(10))
+                      : Array.isArray(v) ? v.map(canon) : v);
+const keyOf = (values) => JSON.stringify(values.map(canon));
+
+function paint(canvas, source, key) {
+  const kept = canvas.__course;
+  if (kept) {                        // the values of the pictures painted, newest last
+    kept.painted.push(key);
+    if (kept.painted.length > 200) kept.painted.shift();
+  }
+  const context = canvas.offscreen_context;
+  context.clearRect(0, 0, canvas.offscreen_canvas.width, canvas.offscreen_canvas.height);
+  context.drawImage(source, 0, 0);
+  canvas._for_each_view((view) => view.update_canvas());
+}
+
 function patch(proto) {
   if (proto.__courseFrames) return;
   proto.__courseFrames = true;
@@ -203,26 +236,143 @@ function patch(proto) {
     const decoded = createImageBitmap(new Blob([bytes], {type: 'image/png'}));
     this.__coursePainted = (this.__coursePainted || Promise.resolve()).then(() => decoded)
       .then((bitmap) => {
-        const context = this.offscreen_context;
+        const pictures = this.__course;
+        const target = pictures ? pictures.kernelCanvas() : this.offscreen_canvas;
+        const context = pictures ? target.getContext('2d') : this.offscreen_context;
         if (msg.x === undefined) {
-          context.clearRect(0, 0, this.offscreen_canvas.width, this.offscreen_canvas.height);
+          context.clearRect(0, 0, target.width, target.height);
           context.drawImage(bitmap, 0, 0);
         } else {
           context.drawImage(bitmap, msg.x, msg.y);
         }
         bitmap.close();
-        this._for_each_view((view) => view.update_canvas());
+        if (!pictures) {
+          this._for_each_view((view) => view.update_canvas());
+        } else if (pictures.kernelFrame(msg)) {
+          paint(this, target, pictures.kernelKey);
+        }  // else: drawn for values the page has already left; the frame for its values follows
       }).catch(() => {});
   };
 }
+
+// The pictures the kernel drew ahead (course_lib/_prefetch.py), by the values of every control
+function pictures(canvas, controls) {
+  const p = {canvas, entries: new Map(), decoded: [], epoch: 0, need: 0, pressed: false,
+             kernelKey: null, copy: null, shown: 0, missed: 0, stale: 0, painted: []};
+  p.current = () => keyOf(controls.map(([model, name]) => model.get(name)));
+  p.kernelCanvas = () => {           // the kernel's last frame, whatever the page shows
+    const {width, height} = canvas.offscreen_canvas;
+    if (!p.copy) p.copy = document.createElement('canvas');
+    if (p.copy.width !== width || p.copy.height !== height) {
+      p.copy.width = width;
+      p.copy.height = height;
+    }
+    return p.copy;
+  };
+  p.kernelFrame = (msg) => {         // whether to show it: it shows the page's values
+    if (msg.epoch !== undefined) p.epoch = Math.max(p.epoch, msg.epoch);
+    p.kernelKey = msg.state ? keyOf(msg.state) : null;
+    const now = !msg.state || p.kernelKey === p.current();
+    if (!now) p.stale += 1;
+    return now;
+  };
+  const release = (entry) => {
+    if (entry && entry.bitmap) entry.bitmap.close();
+    if (entry) { entry.bitmap = null; entry.decoding = null; }
+  };
+  p.forget = () => {
+    for (const entry of p.entries.values()) release(entry);
+    p.entries.clear();
+    p.decoded = [];
+  };
+  p.touch = (key) => {
+    const k = p.decoded.indexOf(key);
+    if (k >= 0) p.decoded.splice(k, 1);
+    p.decoded.push(key);
+    while (p.decoded.length > KEEP_DECODED) release(p.entries.get(p.decoded.shift()));
+  };
+  p.decode = (key, entry) => {
+    if (!entry.decoding) {
+      entry.decoding = createImageBitmap(entry.blob).then((bitmap) => {
+        if (p.entries.get(key) !== entry || !entry.decoding) { bitmap.close(); return null; }
+        entry.bitmap = bitmap;
+        p.touch(key);
+        return bitmap;
+      }).catch(() => null);
+    }
+    return entry.decoding;
+  };
+  p.receive = (msg, buffers) => {
+    if (msg.type === 'clear') return p.forget();
+    if (msg.type !== 'frame') return;
+    p.epoch = Math.max(p.epoch, msg.epoch);
+    // drawn before the kernel saw the mouse go up on the figure: perhaps stale
+    if (p.pressed || msg.epoch < p.need || p.entries.size >= KEEP) return;
+    const data = buffers[0];
+    const key = keyOf(msg.state);
+    release(p.entries.get(key));
+    const entry = {blob: new Blob([ArrayBuffer.isView(data) ? data : new Uint8Array(data)],
+                                  {type: 'image/png'}), bitmap: null, decoding: null};
+    p.entries.set(key, entry);
+    if (p.decoded.length < KEEP_DECODED) p.decode(key, entry);   // the nearest come first
+  };
+  p.show = () => {                   // a control changed in the page
+    if (p.pressed) return;
+    const key = p.current();
+    const entry = p.entries.get(key);
+    if (entry && entry.bitmap) {
+      p.touch(key);
+      paint(canvas, entry.bitmap, key);
+      p.shown += 1;
+    } else if (entry) {
+      p.decode(key, entry).then((bitmap) => {
+        if (bitmap && !p.pressed && p.current() === key) {
+          paint(canvas, bitmap, key);
+          p.shown += 1;
+        }
+      });
+    } else if (p.copy && p.kernelKey === key) {
+      paint(canvas, p.copy, key);    // back to the values of the kernel's last frame
+    } else {
+      p.missed += 1;
+    }
+  };
+  // the mouse on the figure may change what no control shows (a point, a view): the pictures
+  // are forgotten, and new ones accepted once drawn after the kernel has seen the mouse go up
+  const inside = (target) => Promise.all(Object.values(canvas.views || {}))
+    .then((views) => views.some((view) => view && view.el && view.el.contains(target)));
+  document.addEventListener('mousedown', (event) => {
+    inside(event.target).then((yes) => {
+      if (yes) { p.pressed = true; p.forget(); }
+    }).catch(() => {});
+  }, true);
+  document.addEventListener('mouseup', () => {
+    if (p.pressed) { p.pressed = false; p.need = p.epoch + 1; }
+  }, true);
+  return p;
+}
+
 export default {
   async initialize({ model }) {
     // never fails: without the patch the canvas keeps ipympl's own path (whole frames)
     try {
       const ref = model.get('canvas') || '';
-      const canvas = await model.widget_manager.get_model(ref.replace(/^IPY_MODEL_/, ''));
+      const manager = model.widget_manager;
+      const canvas = await manager.get_model(ref.replace(/^IPY_MODEL_/, ''));
       if (canvas && typeof canvas.handle_binary === 'function') {
         patch(Object.getPrototypeOf(canvas));
+        const specs = model.get('controls') || [];
+        if (specs.length) {
+          const controls = await Promise.all(specs.map(
+            ([id, name]) => manager.get_model(id).then((control) => [control, name])));
+          const kept = pictures(canvas, controls);
+          kept.ids = specs.map(([id]) => id);
+          canvas.__course = kept;
+          // the browser tests and the benchmark read how often a kept picture was shown
+          (window.__coursePictures = window.__coursePictures || []).push(kept);
+          model.on('msg:custom', (msg, buffers) => kept.receive(msg, buffers || []));
+          for (const [control, name] of controls) control.on(`change:${name}`, kept.show);
+        }
         model.send({type: 'ready'});
       }
     } catch (error) { /* the canvas was closed before the page saw it */ }
@@ -266,7 +416,8 @@ def frame_decoder(canvas):
     >>> frame_decoder(canvas).canvas is canvas
     True
     """
-    return _decoder_class()(canvas=canvas)
+    prefetch = getattr(canvas, "_course_prefetch", None)
+    return _decoder_class()(canvas=canvas, controls=prefetch.spec() if prefetch else [])
 
 
 _DECODER_CLASS = None
@@ -283,6 +434,8 @@ def _decoder_class():
         class _FrameDecoder(anywidget.AnyWidget):
             _esm = _DECODER_ESM
             canvas = traitlets.Instance(Canvas).tag(sync=True, **widget_serialization)
+            #: ``[[model id, trait]]`` of the explorer's controls (:mod:`course_lib._prefetch`)
+            controls = traitlets.List().tag(sync=True)
 
             def __init__(self, **kwargs):
                 super().__init__(**kwargs)
@@ -294,6 +447,9 @@ def _decoder_class():
                     # one before may have been dropped by ipympl's own handler)
                     self.canvas._course_last = None
                     self.canvas._course_regions = True
+                    prefetch = getattr(self.canvas, "_course_prefetch", None)
+                    if prefetch is not None and self.controls:
+                        prefetch.ready(self)
 
         _DECODER_CLASS = _FrameDecoder
     return _DECODER_CLASS

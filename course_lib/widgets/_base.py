@@ -137,7 +137,25 @@ def _on_main_thread(handler, loop, main):
     forward.forwarded = 0
     forward.merged = 0
     forward.trace = None
+    forward.waiting = waiting
+    _FORWARDERS.append(forward)
     return forward
+
+
+#: Every wrapper made by :func:`_on_main_thread` (one per comm message type).
+_FORWARDERS = []
+
+
+def comms_waiting():
+    """Whether a widget message is waiting for the kernel's main thread (then the kernel is
+    not idle: :mod:`course_lib._prefetch` draws nothing ahead).
+
+    Examples
+    --------
+    >>> comms_waiting()
+    False
+    """
+    return any(forward.waiting for forward in _FORWARDERS)
 
 
 def figure_3d(radius, title, size=4.3):
@@ -529,6 +547,9 @@ class Explorer:
         return buffer.getvalue()
 
     def _repr_mimebundle_(self, include=None, exclude=None):
+        from .._prefetch import attach
+
+        attach(self)                    # its next pictures drawn ahead, once a page keeps them
         image = self.png()
         encoded = base64.b64encode(image).decode("ascii") if image is not None else None
         bundle = dict(self.widget._repr_mimebundle_(include=include, exclude=exclude) or {})

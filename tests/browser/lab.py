@@ -315,6 +315,7 @@ class PageKernel:
 
     def run(self, code):
         """Execute `code` in the page's kernel; return what it printed (raise on an error)."""
+        self._drain()
         printed, errors = [], []
 
         def hook(msg):
@@ -328,6 +329,20 @@ class PageKernel:
         if reply["content"]["status"] != "ok":
             raise RuntimeError("".join(errors))
         return "".join(printed)
+
+    def _drain(self):
+        """Read away the broadcast messages received since the last call. The kernel sends
+        every client every widget message and frame (the explorers' pictures drawn ahead
+        among them); a client that has not read for a while holds ZeroMQ's limit of them
+        (1,000 per side), and the kernel then drops new ones for it, the answer to the next
+        call among them (seen as a "Timeout waiting for output" with the kernel idle)."""
+        import queue
+
+        while True:
+            try:
+                self.client.get_iopub_msg(timeout=0.01)
+            except queue.Empty:
+                return
 
     def json(self, code):
         """`code` ends by printing a JSON document: return it parsed."""
@@ -357,13 +372,20 @@ def cell_execution_counts(notebook):
 _EXPLORERS = """
 import json
 from course_lib.widgets._base import Explorer
+def _kept(explorer):
+    prefetch = getattr(getattr(getattr(explorer, "fig", None), "canvas", None),
+                       "_course_prefetch", None)
+    return [c for c, _ in prefetch.spec()] if prefetch is not None else []
 print(json.dumps([{"class": type(Out.get(n)).__name__,
                    "gestures": Out[n].mouse_gestures() if isinstance(Out.get(n), Explorer)
-                   else []} for n in COUNTS]))
+                   else [],
+                   "kept": _kept(Out[n]) if isinstance(Out.get(n), Explorer) else []}
+                  for n in COUNTS]))
 """
 
 
 def page_explorers(notebook, kernel):
     """For each widget view of the page, in page order, the class of the object its cell
-    displayed and that explorer's mouse gestures (read in the page's kernel)."""
+    displayed, that explorer's mouse gestures and the model ids of the controls whose
+    pictures it draws ahead (course_lib/_prefetch.py; read in the page's kernel)."""
     return kernel.json(_EXPLORERS.replace("COUNTS", repr(cell_execution_counts(notebook))))

@@ -130,8 +130,11 @@ def drive_lesson(lab, browser, path):
         assert notebook.log_console_count() == 0, "JupyterLab's log console caught messages"
         with open(log, errors="replace") as f:
             f.seek(log_start)
-            bad = [line for line in f if SERVER_LOG_PROBLEMS.search(line)]
-        assert bad == [], "the server log (the kernel's stderr) shows:\n" + "".join(bad[:20])
+            lines = f.readlines()
+        # each problem with the lines that follow it (a traceback's frames and its error)
+        bad = ["".join(lines[k:k + 25]) for k, line in enumerate(lines)
+               if SERVER_LOG_PROBLEMS.search(line)]
+        assert bad == [], "the server log (the kernel's stderr) shows:\n" + "".join(bad[:4])
     finally:
         kernel.close()
         notebook.close()

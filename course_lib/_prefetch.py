@@ -1,0 +1,512 @@
+"""Frames drawn before they are asked for: a slider answers in the browser, not in the kernel.
+
+Every frame of a live explorer makes a round trip: the browser sends the new value to the
+kernel, the kernel draws and encodes the picture, the browser decodes and paints it. On a
+2-core machine that trip alone (websocket, Jupyter server, kernel, back) costs 25-40 ms
+before the explorer has drawn anything (``python -m benchmarks --browser``). A picture that is
+already in the page costs none of it.
+
+So while the kernel has nothing else to do, a :class:`Prefetcher` draws the explorer's figure
+at the values the student is likely to choose next (the neighbours of the slider moved last,
+one step and then further out; one step of every other control) and sends each picture to the
+page with the values of *every* control it was drawn at. The page keeps them
+(:data:`course_lib._canvas._DECODER_ESM`); when a control changes in the browser and a picture
+for the page's new values is there, the page paints it at once, and the kernel's own frame
+follows a moment later (the text panels come with it). A kernel frame is painted only if it
+belongs to the values the page shows, so a stale frame never overwrites a newer one.
+
+A prefetched picture must be the picture the kernel would draw. :func:`render_at` draws it
+with every widget message and frame held back, then sets the values back and checks that the
+figure and every widget of the explorer are exactly as before; an explorer whose picture
+depends on more than its controls (a timing in the panel, a random draw) fails that check and
+is not prefetched again. What the controls cannot show (a point dragged, a 3D view turned)
+clears the pictures on both sides: the page clears them when the mouse goes down on the
+figure and accepts new ones only once the kernel has seen the mouse go up; the kernel clears
+its list when it sees it, and whenever one of its frames differs from the picture it sent for
+the same values.
+"""
+import contextlib
+import io
+import time
+import weakref
+import zlib
+
+import numpy as np
+
+from ._canvas import _kernel_loop
+
+__all__ = ["Prefetcher", "attach", "controls", "render_at"]
+
+#: Pictures prefetched around the slider moved last (each side together).
+FOCUS_FRAMES = 64
+#: Pictures the kernel keeps track of (and the page keeps) before it stops prefetching.
+MAX_FRAMES = 300
+#: Seconds of drawing spent on prefetching after each input, at most.
+BUDGET_S = 3.0
+#: Seconds the kernel must have been idle before it prefetches.
+IDLE_S = 0.04
+
+
+def _tree(widget):
+    """Every widget of a widget tree, depth first, each once."""
+    seen, stack, out = set(), [widget], []
+    while stack:
+        w = stack.pop()
+        if w is None or id(w) in seen:
+            continue
+        seen.add(id(w))
+        out.append(w)
+        stack.extend(reversed(list(getattr(w, "children", ()) or ())))
+    return out
+
+
+def controls(widget):
+    """The controls of a widget tree whose values decide an explorer's picture: every value
+    widget except the ones that only show something (text, images). Returns
+    ``[(widget, name)]``, `name` the trait the page compares (``"index"`` for a choice among
+    options, else ``"value"``).
+
+    Examples
+    --------
+    >>> import ipywidgets as w
+    >>> box = w.VBox([w.IntSlider(3), w.HTML("text"), w.Dropdown(options=["a", "b"])])
+    >>> [(type(c).__name__, name) for c, name in controls(box)]
+    [('IntSlider', 'value'), ('Dropdown', 'index')]
+    """
+    import ipywidgets as w
+    from ipywidgets.widgets.widget_selection import _MultipleSelection, _Selection
+
+    shown = (w.HTML, w.HTMLMath, w.Label, w.Image, w.Valid, w.Output)
+    out = []
+    for x in _tree(widget):
+        if isinstance(x, shown) or not isinstance(x, w.ValueWidget):
+            continue
+        name = "index" if isinstance(x, (_Selection, _MultipleSelection)) else "value"
+        out.append((x, name))
+    return out
+
+
+def _canon(value):
+    """A control's value as the page compares it (floats to 10 significant digits)."""
+    if isinstance(value, bool) or value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        return float(f"{float(value):.10g}")
+    if isinstance(value, (tuple, list)):
+        return tuple(_canon(v) for v in value)
+    return repr(value)
+
+
+def _plain(value):
+    """A control's value for JSON."""
+    if isinstance(value, (tuple, list)):
+        return [_plain(v) for v in value]
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+def candidates(control, name):
+    """The values of one control worth drawing ahead, nearest to its value first (its own
+    value excluded): every step of a linear slider, every option of a choice, the other state
+    of a check box. Others (log sliders, ranges, text) give none.
+
+    Examples
+    --------
+    >>> import ipywidgets as w
+    >>> candidates(w.IntSlider(value=2, min=0, max=4), "value")
+    [1, 3, 0, 4]
+    >>> candidates(w.Checkbox(True), "value")
+    [False]
+    >>> candidates(w.ToggleButtons(options=["a", "b", "c"], index=0), "index")
+    [1, 2]
+    """
+    import ipywidgets as w
+
+    if getattr(control, "disabled", False):
+        return []
+    if isinstance(control, (w.Checkbox, w.ToggleButton)):
+        return [not control.value]
+    if name == "index":
+        n, now = len(control.options), control.index
+        if not isinstance(now, int) or n > 200:
+            return []
+        return sorted((k for k in range(n) if k != now), key=lambda k: (abs(k - now), k))
+    if isinstance(control, (w.IntSlider, w.FloatSlider)):
+        low, high, step = control.min, control.max, control.step
+        if not step or step <= 0 or high <= low:
+            return []
+        count = int(round((high - low) / step))
+        here = int(round((control.value - low) / step))
+        ks = [k for d in range(1, min(count, FOCUS_FRAMES) + 1) for k in (here - d, here + d)
+              if 0 <= k <= count]
+        if isinstance(control, w.IntSlider):
+            return [int(low + k * step) for k in ks]
+        return [float(round(low + k * step, 12)) for k in ks]
+    return []
+
+
+@contextlib.contextmanager
+def _held(canvas):
+    """Nothing leaves the kernel while inside: no widget message (of any widget), no frame;
+    a requested redraw is recorded instead of queued (the list yielded)."""
+    import ipywidgets as w
+
+    requests = []
+    manager = getattr(canvas, "manager", None)
+    saved_send = w.Widget.__dict__["_send"]
+    saved_idle = canvas.__dict__.get("draw_idle")
+    saved_refresh = manager.__dict__.get("refresh_all") if manager is not None else None
+    png_old = getattr(canvas, "_png_is_old", None)
+    w.Widget._send = lambda self, msg, buffers=None: None
+    canvas.draw_idle = lambda *args, **kwargs: requests.append(True)
+    if manager is not None:
+        manager.refresh_all = lambda *args, **kwargs: None
+    try:
+        yield requests
+    finally:
+        w.Widget._send = saved_send
+        if saved_idle is None:
+            del canvas.draw_idle
+        else:
+            canvas.draw_idle = saved_idle
+        if manager is not None:
+            if saved_refresh is None:
+                del manager.refresh_all
+            else:
+                manager.refresh_all = saved_refresh
+        if png_old is not None:
+            canvas._png_is_old = png_old
+
+
+def _snapshot(explorer):
+    """A function that puts back the explorer's model (its ``state``, the positions of its
+    draggable points) as it is now: an update may change more than its picture (imposing a
+    continuity moves the constrained points)."""
+    from .widgets._drag import DraggablePoints
+
+    def copied(value):
+        # data is copied; anything else a state holds (a drawing object, a cache) is kept as
+        # it is: copying a figure would make a new canvas, a new widget
+        if isinstance(value, np.ndarray):
+            return value.copy()
+        if isinstance(value, list):
+            return [copied(v) for v in value]
+        if isinstance(value, dict):
+            return {k: copied(v) for k, v in value.items()}
+        if type(value) is tuple:
+            return tuple(copied(v) for v in value)
+        return value
+
+    state = getattr(explorer, "state", None)
+    saved = ({k: copied(v) for k, v in vars(state).items()} if hasattr(state, "__dict__")
+             else None)
+    points = [(d, d.points.copy()) for d in vars(explorer).values()
+              if isinstance(d, DraggablePoints)]
+
+    def restore():
+        if saved is not None:
+            vars(state).update({k: copied(v) for k, v in saved.items()})
+        for drag, where in points:
+            if drag.points.shape == where.shape:
+                drag.points[...] = where
+            else:
+                drag.points = where.copy()
+    return restore
+
+
+def _pixels(canvas):
+    return np.asarray(canvas.get_renderer().buffer_rgba()).copy()
+
+
+def _states(widgets):
+    return [w.get_state() for w in widgets]
+
+
+class NotPrefetchable(RuntimeError):
+    """The explorer's picture or widgets were not the same after setting the values back."""
+
+
+def render_at(explorer, settings):
+    """The explorer's figure drawn with `settings` (``{control: value}``, `value` for the
+    control's trait named by :func:`controls`), as RGBA pixels, and the values of every control
+    it was drawn at; everything is set back afterwards, and nothing reaches the browser.
+
+    Raises :class:`NotPrefetchable` (after setting everything back as well as it can) if the
+    figure or a widget of the explorer is not exactly as before.
+
+    Examples
+    --------
+    >>> from course_lib.widgets.bezier import BezierExplorer
+    >>> ex = BezierExplorer()
+    >>> ex.fig.canvas.draw()
+    >>> t = next(c for c, name in controls(ex.widget) if c.description == "t")
+    >>> pixels, values = render_at(ex, {t: 0.9})
+    >>> pixels.shape[-1], 0.9 in values, t.value == 0.9
+    (4, True, False)
+    """
+    canvas = explorer.fig.canvas
+    every = controls(explorer.widget)
+    names = dict((id(c), n) for c, n in every)
+    tree = [w for w in _tree(explorer.widget) if w is not canvas]
+    blitter = explorer.blitter
+    background = blitter.background if blitter is not None else None
+    before = _pixels(canvas)
+    states = _states(tree)
+    saved = {c: getattr(c, n) for c, n in every}
+    restore = _snapshot(explorer)
+    values = None
+    with _held(canvas) as requests:
+        try:
+            for control, value in settings.items():
+                setattr(control, names[id(control)], value)
+            if requests or (blitter is not None and blitter.background is None):
+                canvas.draw()
+            pixels = _pixels(canvas)
+            values = [_plain(getattr(c, n)) for c, n in every]
+        finally:
+            requests.clear()
+            if blitter is not None:
+                blitter.background = background
+            # the ones set first (a choice may set other controls), then any other changed;
+            # then the model, which an update may have changed beyond the controls
+            for control in [*settings, *saved]:
+                if getattr(control, names[id(control)]) != saved[control]:
+                    setattr(control, names[id(control)], saved[control])
+            restore()
+            if requests or (blitter is not None and blitter.background is None):
+                canvas.draw()
+            if not np.array_equal(_pixels(canvas), before):
+                # a control set back changed the model again (a preset chosen anew): draw
+                # the model as it was
+                requests.clear()
+                explorer.update()
+                if requests or (blitter is not None and blitter.background is None):
+                    canvas.draw()
+    if not np.array_equal(_pixels(canvas), before):
+        raise NotPrefetchable("the figure is not the same after setting the values back")
+    changed = [w for w, s in zip(tree, states) if w.get_state() != s]
+    if changed:
+        for widget in changed:                       # the page must see what the kernel has
+            widget.send_state()
+        raise NotPrefetchable(f"{len(changed)} widget(s) not the same after setting the "
+                              "values back")
+    return pixels, values
+
+
+def _png(pixels):
+    from PIL import Image
+
+    if pixels[..., 3].min() == 255:
+        pixels = pixels[..., :3]
+    with io.BytesIO() as out:
+        Image.fromarray(np.ascontiguousarray(pixels)).save(out, format="png", compress_level=1)
+        return out.getvalue()
+
+
+def _crc(pixels):
+    return zlib.crc32(np.ascontiguousarray(pixels).data)
+
+
+class Prefetcher:
+    """Draws an explorer's next pictures while the kernel is idle and sends them to the page
+    (through the canvas's frame decoder, once its page has said it keeps them).
+
+    The kernel side of the scheme in this module's docstring: it follows which control the
+    student moved last (the focus), counts the mouse releases on the figure (the page's
+    pictures from before the last release are refused there), remembers the pictures sent and
+    their checksums, and spends at most :data:`BUDGET_S` seconds of drawing after each
+    input.
+
+    Examples
+    --------
+    >>> from course_lib.widgets.bezier import BezierExplorer
+    >>> explorer = BezierExplorer()
+    >>> prefetch = Prefetcher(explorer)
+    >>> [(c.description, v) for c, v, _ in prefetch.plan()][:2]   # t, one step either side
+    [('t', 0.39), ('t', 0.41)]
+    >>> prefetch.step()              # no page keeps pictures yet (no decoder): nothing drawn
+    >>> prefetch.frames
+    0
+    """
+
+    def __init__(self, explorer):
+        self.explorer = weakref.ref(explorer)
+        self.canvas = explorer.fig.canvas
+        self.controls = controls(explorer.widget)
+        self.sent = {}                 # canonical values -> checksum of the picture sent
+        self.epoch = 0                 # mouse releases on the figure seen by the kernel
+        self.focus = None
+        self.decoder = None
+        self.enabled = True
+        self.skip = set()              # ids of controls whose pictures cannot be drawn ahead
+        self.drawing = False
+        self.spent = 0.0
+        self.handle = None
+        self.frames = 0                # pictures sent (the tests read it)
+        for control, name in self.controls:
+            control.observe(self._moved, names=name)
+        self.canvas.on_msg(self._mouse)
+
+    # -- what the kernel knows of the page ---------------------------------------------------
+    def spec(self):
+        """``[[model id, trait]]`` of every control, in the order of :meth:`values`."""
+        return [[c.model_id, n] for c, n in self.controls]
+
+    def values(self):
+        return [_plain(getattr(c, n)) for c, n in self.controls]
+
+    def key(self, values=None):
+        return tuple(_canon(v) for v in (self.values() if values is None else values))
+
+    def ready(self, decoder):
+        """A page keeps this explorer's pictures from now on (it has none yet)."""
+        self.decoder = decoder
+        self.sent.clear()
+        self.wake()
+
+    def _moved(self, change):
+        if self.drawing:
+            return
+        owner = change["owner"]
+        self.focus = owner
+        self.spent = 0.0
+
+    def _mouse(self, widget, content, buffers):
+        if isinstance(content, dict) and content.get("type") == "button_release":
+            # a point dragged or a view turned: every picture drawn before is stale
+            self.epoch += 1
+            self.sent.clear()
+            self.spent = 0.0
+
+    def frame_sent(self, pixels):
+        """The kernel sends a frame of the current values: check it against the picture sent
+        for them, if any (a difference clears both sides), and prefetch again later."""
+        key = self.key()
+        crc = self.sent.get(key)
+        if crc is not None and crc != _crc(pixels):
+            self.clear()
+        self.wake()
+
+    def clear(self):
+        self.sent.clear()
+        if self.decoder is not None:
+            self.decoder.send({"type": "clear"})
+
+    def message(self):
+        """What a kernel frame carries: the values it shows and the kernel's epoch."""
+        return {"state": self.values(), "epoch": self.epoch}
+
+    # -- drawing ahead -----------------------------------------------------------------------
+    def plan(self):
+        """``[(control, value, values)]`` still to draw for the current values, most likely
+        first; `values` are those of every control in the page once the student has set
+        `control` to `value` (the picture is kept under them: a choice that sets other
+        controls in the kernel is found in the page before those reach it)."""
+        movable = [(c, n) for c, n in self.controls if id(c) not in self.skip]
+        lists = {id(c): candidates(c, n) for c, n in movable}
+        focus = self.focus
+        if focus is None or not lists.get(id(focus)):
+            focus = next((c for c, n in movable if lists[id(c)] and n == "value"
+                          and not isinstance(c.value, bool)), None)
+        order = []
+        if focus is not None:
+            order += [(focus, v) for v in lists[id(focus)][:2]]
+        for c, _ in movable:
+            if c is not focus:
+                order += [(c, v) for v in lists[id(c)][:2]]
+        if focus is not None and self.focus is not None:
+            # further out only once the student has moved a control: an explorer nobody
+            # touches costs a step either side of each control
+            order += [(focus, v) for v in lists[id(focus)][2:FOCUS_FRAMES]]
+        now = self.values()
+        index = {id(c): k for k, (c, _) in enumerate(self.controls)}
+        out = []
+        for control, value in order:
+            values = list(now)
+            values[index[id(control)]] = _plain(value)
+            if self.key(values) not in self.sent:
+                out.append((control, value, values))
+        return out
+
+    def wake(self, delay=IDLE_S):
+        """Prefetch once the kernel has been idle for `delay` seconds."""
+        loop = _kernel_loop()
+        if loop is None or self.decoder is None or not self.enabled:
+            return
+        if self.handle is not None:
+            loop.remove_timeout(self.handle)
+        self.handle = loop.call_later(delay, self.step)
+
+    def _busy(self):
+        from .widgets._base import comms_waiting
+
+        canvas = self.canvas
+        return (comms_waiting() or getattr(canvas, "_course_draw_queued", False)
+                or getattr(canvas, "_png_is_old", False))
+
+    def step(self):
+        """Draw and send one picture, then come back for the next."""
+        self.handle = None
+        explorer = self.explorer()
+        if explorer is None or not self.enabled or self.decoder is None:
+            return
+        if self._busy():
+            return self.wake()
+        if self.spent >= BUDGET_S or len(self.sent) >= MAX_FRAMES:
+            return
+        plan = self.plan()
+        if not plan:
+            return
+        control, value, values = plan[0]
+        began = time.perf_counter()
+        self.drawing = True
+        try:
+            pixels, _ = render_at(explorer, {control: value})
+        except Exception:
+            # this control is drawn only live from now on (after three such, every control);
+            # the page is sent the kernel's picture again in case it is not the same
+            self.skip.add(id(control))
+            self.enabled = len(self.skip) < 3
+            self.canvas.draw_idle()
+            return
+        finally:
+            self.drawing = False
+        png = _png(pixels)
+        self.sent[self.key(values)] = _crc(pixels)
+        self.decoder.send({"type": "frame", "state": values, "epoch": self.epoch},
+                          buffers=[png])
+        self.frames += 1
+        self.spent += time.perf_counter() - began
+        self.wake(0.0)
+
+
+def attach(explorer):
+    """Give a displayed explorer's ipympl canvas a :class:`Prefetcher` (once); explorers
+    without one canvas of their own, or with an output area, are left alone. Returns the
+    prefetcher or None.
+
+    Examples
+    --------
+    >>> from course_lib.widgets.bezier import BezierExplorer
+    >>> explorer = BezierExplorer()
+    >>> attach(explorer) is attach(explorer) is explorer.fig.canvas._course_prefetch
+    True
+    """
+    fig = getattr(explorer, "fig", None)
+    canvas = getattr(fig, "canvas", None)
+    if canvas is None or not hasattr(canvas, "on_msg") or explorer.widget is None:
+        return None
+    existing = getattr(canvas, "_course_prefetch", None)
+    if existing is not None:
+        return existing
+    import ipywidgets as w
+
+    tree = _tree(explorer.widget)
+    canvases = [x for x in tree if hasattr(x, "get_diff_image")]
+    if canvases != [canvas] or any(isinstance(x, w.Output) for x in tree):
+        return None
+    canvas._course_prefetch = Prefetcher(explorer)
+    return canvas._course_prefetch

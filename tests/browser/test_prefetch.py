@@ -1,0 +1,175 @@
+"""Pictures drawn ahead (course_lib/_prefetch.py) in a real browser: a slider step is answered
+from the page's kept pictures at once, each kept picture is the one the kernel then sends for
+the same values, a frame the page has already moved past is not painted, and the mouse on the
+figure (a control point dragged) throws the kept pictures away until new ones come."""
+import json
+import time
+
+import pytest
+
+from .lab import NotebookPage, PageKernel, figure_canvas, page_explorers, widget_view
+
+LESSON = "notebooks/ch07_curves_surfaces.ipynb"
+
+# The kept pictures of the explorer whose first control has model id `id`
+_KEPT = "(id) => (window.__coursePictures || []).find((p) => p.ids[0] === id)"
+
+_STATS = "(id) => { const p = (%s)(id); return p && {entries: p.entries.size, shown: p.shown, " \
+         "stale: p.stale, pressed: p.pressed, need: p.need, epoch: p.epoch, " \
+         "current: p.current(), kernel: p.kernelKey}; }" % _KEPT
+
+# The kept picture for the page's current values against the kernel's last frame (for the
+# same values), pixel by pixel; and the canvas the student sees against the kernel's frame.
+_COMPARE = r"""async (id) => {
+  const p = (%s)(id);
+  const pixels = (source) => {
+    const c = new OffscreenCanvas(p.copy.width, p.copy.height);
+    const ctx = c.getContext('2d', {willReadFrequently: true});
+    ctx.drawImage(source, 0, 0);
+    return ctx.getImageData(0, 0, c.width, c.height).data;
+  };
+  const differ = (a, b) => { let n = 0; for (let i = 0; i < a.length; i += 4)
+    if (a[i] !== b[i] || a[i + 1] !== b[i + 1] || a[i + 2] !== b[i + 2]) n++; return n; };
+  const kernel = pixels(p.copy);
+  const entry = p.entries.get(p.current());
+  const kept = entry ? pixels(await createImageBitmap(entry.blob)) : null;
+  return {sameValues: p.kernelKey === p.current(), kept: kept && differ(kept, kernel),
+          shown: differ(pixels(p.canvas.offscreen_canvas), kernel)};
+}""" % _KEPT
+
+
+def _wait(page, ident, test, timeout=30.0):
+    deadline = time.monotonic() + timeout
+    while True:
+        stats = page.evaluate(_STATS, ident)
+        if stats and test(stats) or time.monotonic() > deadline:
+            return stats
+        time.sleep(0.1)
+
+
+@pytest.fixture(scope="module")
+def bezier(lab, browser):
+    notebook = NotebookPage(browser, lab, LESSON).open().run_all()
+    kernel = PageKernel(lab, LESSON)
+    try:
+        explorers = page_explorers(notebook, kernel)
+        k = [e["class"] for e in explorers].index("BezierExplorer")
+        assert explorers[k]["kept"], "the Bézier explorer draws no pictures ahead"
+        yield notebook, kernel, widget_view(notebook, k), explorers[k]["kept"][0]
+    finally:
+        kernel.close()
+        notebook.close()
+
+
+def _steady(page, ident):
+    """Until the kernel's last frame shows the page's values and nothing new comes."""
+    last = None
+    for _ in range(100):
+        stats = page.evaluate(_STATS, ident)
+        if stats["kernel"] == stats["current"] and stats == last:
+            return stats
+        last = stats
+        time.sleep(0.2)
+    return last
+
+
+def test_a_slider_step_is_answered_by_a_kept_picture_that_the_kernel_then_confirms(bezier):
+    notebook, kernel, view, ident = bezier
+    page = notebook.page
+    stats = _wait(page, ident, lambda s: s["entries"] >= 2)
+    assert stats["entries"] >= 2, f"no pictures kept ahead: {stats}"
+    slider = view.locator(".widget-slider").first
+    slider.locator(".noUi-handle").first.focus()
+    for step in range(6):
+        before = page.evaluate(_STATS, ident)
+        page.keyboard.press("ArrowRight" if step < 4 else "ArrowLeft")
+        after = page.evaluate(_STATS, ident)
+        # painted in the key's own handler: before any frame could come from the kernel
+        assert after["shown"] == before["shown"] + 1, (step, before, after)
+        assert after["current"] != before["current"]
+        _steady(page, ident)
+        got = page.evaluate(_COMPARE, ident)
+        assert got["sameValues"], got
+        assert got["kept"] == 0, f"step {step}: the kept picture differs from the kernel's " \
+                                 f"in {got['kept']} pixels"
+        assert got["shown"] == 0, f"step {step}: the student sees {got['shown']} pixels " \
+                                  "other than the kernel's frame"
+    assert notebook.console_errors == []
+
+
+def test_frames_the_page_has_moved_past_are_not_painted(bezier):
+    notebook, kernel, view, ident = bezier
+    page = notebook.page
+    _steady(page, ident)
+    slider = view.locator(".widget-slider").first
+    slider.locator(".noUi-handle").first.focus()
+    page.keyboard.press("ArrowRight")     # t is the control moved last: its range is drawn
+    _wait(page, ident, lambda s: s["entries"] >= 12)
+    _steady(page, ident)
+    before = page.evaluate(_STATS, ident)
+    painted = page.evaluate("(id) => (%s)(id).painted.length" % _KEPT, ident)
+    # a slow kernel: each value of t takes 0.2 s more to draw, so that the frame of the first
+    # step arrives long after the page has gone on (the kernel merges the steps in between)
+    cell = _cell_of(kernel, "BezierExplorer")
+    kernel.run("import time\n_course_slow = lambda change: time.sleep(0.2)\n"
+               f"Out[{cell}].t.observe(_course_slow, names='value')")
+    try:
+        for _ in range(8):
+            page.keyboard.press("ArrowLeft")
+            time.sleep(0.03)
+        stats = _steady(page, ident)
+    finally:
+        kernel.run(f"Out[{cell}].t.unobserve(_course_slow, names='value')")
+    got = page.evaluate(_COMPARE, ident)
+    assert got["sameValues"] and got["shown"] == 0, got
+    # the pictures painted meanwhile went one way only: never back to a value left behind
+    t = _t_index(kernel)
+    keys = page.evaluate("([id, n]) => (%s)(id).painted.slice(n)" % _KEPT, [ident, painted])
+    ts = [json.loads(key)[t] for key in keys if key is not None]
+    assert len(ts) >= 2 and ts == sorted(ts, reverse=True), ts
+    # the kernel answered some of the eight values after the page had moved on
+    print(f"pictures painted: t = {ts}; stale kernel frames not painted: "
+          f"{stats['stale'] - before['stale']}")
+
+
+def test_the_mouse_on_the_figure_forgets_the_kept_pictures_until_new_ones_come(bezier):
+    notebook, kernel, view, ident = bezier
+    page = notebook.page
+    _wait(page, ident, lambda s: s["entries"] >= 2)
+    canvas = figure_canvas(view)
+    box = canvas.bounding_box()
+    # the default P1 of widgets/bezier.py (xlim = ylim = (-0.5, 5.5), left 0.1, right 0.98,
+    # bottom 0.08, top 0.94)
+    fx = 0.1 + (1.0 + 0.5) / 6 * 0.88
+    fy = 1 - (0.08 + (3.8 + 0.5) / 6 * 0.86)
+    page.mouse.move(box["x"] + fx * box["width"], box["y"] + fy * box["height"])
+    page.mouse.down()
+    held = _wait(page, ident, lambda s: s["pressed"], timeout=5)
+    assert held["pressed"] and held["entries"] == 0, held
+    page.mouse.move(box["x"] + (fx + 0.2) * box["width"], box["y"] + (fy + 0.2) * box["height"],
+                    steps=8)
+    page.mouse.up()
+    moved = kernel.json("import json; print(json.dumps(Out[%d].state.points.tolist()))"
+                        % _cell_of(kernel, "BezierExplorer"))
+    assert abs(moved[1][0] - 1.0) > 0.3, f"the drag did not move P1: {moved}"
+    stats = _wait(page, ident, lambda s: not s["pressed"] and s["entries"] >= 2)
+    assert stats["need"] >= 1 and stats["entries"] >= 2, stats
+    # the new pictures show the moved point: the next step's kept picture is the kernel's
+    slider = view.locator(".widget-slider").first
+    slider.locator(".noUi-handle").first.focus()
+    page.keyboard.press("ArrowRight")
+    _steady(page, ident)
+    got = page.evaluate(_COMPARE, ident)
+    assert got["sameValues"] and got["kept"] == 0 and got["shown"] == 0, got
+
+
+def _t_index(kernel):
+    """Where the t slider's value is among the values a kept picture is filed under."""
+    return int(kernel.run(
+        "print([c.description for c, _ in Out[%d].fig.canvas._course_prefetch.controls]"
+        ".index('t'))" % _cell_of(kernel, "BezierExplorer")).strip())
+
+
+def _cell_of(kernel, name):
+    return int(kernel.run("print(next(n for n, v in Out.items() if type(v).__name__ == %r))"
+                          % name).strip())

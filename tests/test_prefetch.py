@@ -1,0 +1,232 @@
+"""Pictures drawn ahead (course_lib/_prefetch.py), without a browser.
+
+The page shows a kept picture in place of the kernel's frame, so each one must be exactly the
+frame the kernel draws when the student really sets that value; drawing one must leave the
+explorer, its widgets and its figure as they were, and send nothing but the picture itself.
+"""
+import importlib
+import inspect
+import io
+import json
+import pkgutil
+import zlib
+
+import ipywidgets as w
+import numpy as np
+import pytest
+from PIL import Image
+
+import course_lib.widgets as widgets
+from course_lib import _prefetch
+from course_lib.widgets._base import Explorer
+
+#: Plan entries checked per explorer: the first steps a student takes, both sides of each
+#: control, and one further out.
+CHECKED = 6
+
+
+def _explorers():
+    found = []
+    for info in pkgutil.iter_modules(widgets.__path__):
+        if info.name.startswith("_"):
+            continue
+        module = importlib.import_module(f"course_lib.widgets.{info.name}")
+        found += [cls for _, cls in inspect.getmembers(module, inspect.isclass)
+                  if issubclass(cls, Explorer) and cls is not Explorer
+                  and cls.__module__ == module.__name__]
+    return found
+
+
+def _live(explorer, control, name, value):
+    """The frame drawn when `control` is really set to `value` (as the browser's message
+    does, the draw request answered at once), and everything set back the same way."""
+    canvas = explorer.fig.canvas
+    old = getattr(control, name)
+    canvas.draw_idle = canvas.draw
+    try:
+        setattr(control, name, value)
+        frame = np.asarray(canvas.get_renderer().buffer_rgba()).copy()
+        setattr(control, name, old)
+    finally:
+        del canvas.draw_idle
+    return frame
+
+
+def _states(explorer):
+    canvas = explorer.fig.canvas
+    return [x.get_state() for x in _prefetch._tree(explorer.widget) if x is not canvas]
+
+
+@pytest.mark.parametrize("cls", _explorers(), ids=lambda cls: cls.__name__)
+def test_a_picture_drawn_ahead_is_the_frame_drawn_live_and_changes_nothing(cls, monkeypatch):
+    explorer = cls()
+    prefetch = _prefetch.attach(explorer)
+    if prefetch is None:
+        tree = _prefetch._tree(explorer.widget) if explorer.widget is not None else []
+        canvases = sum(hasattr(x, "get_diff_image") for x in tree)
+        assert canvases != 1 or any(isinstance(x, w.Output) for x in tree), \
+            f"{cls.__name__} has one canvas of its own and no output area, yet no prefetcher"
+        pytest.skip(f"{cls.__name__}: {canvases} figure canvases or an output area: "
+                    "drawn only live")
+    canvas = explorer.fig.canvas
+    canvas.draw()
+    sent = []
+    monkeypatch.setattr(w.Widget, "_send", lambda self, msg, buffers=None: sent.append(msg))
+    names = {id(c): n for c, n in prefetch.controls}
+    plan = prefetch.plan()
+    if not plan:
+        pytest.skip(f"{cls.__name__}: no control with values to draw ahead")
+    prefetch.focus = plan[0][0]                       # as after the student's first step
+    plan = prefetch.plan()
+    chosen = plan[:CHECKED - 1] + plan[-1:]
+    refused = []
+    for control, value, values in chosen:
+        before, states = np.asarray(canvas.get_renderer().buffer_rgba()).copy(), \
+            _states(explorer)
+        sent.clear()
+        try:
+            pixels, drawn_at = _prefetch.render_at(explorer, {control: value})
+        except _prefetch.NotPrefetchable as why:
+            refused.append((control, value, str(why)))
+            continue
+        assert sent == [], f"drawing ahead sent {len(sent)} widget message(s)"
+        assert np.array_equal(np.asarray(canvas.get_renderer().buffer_rgba()), before), \
+            "the figure is not as it was"
+        assert _states(explorer) == states, "a widget is not as it was"
+        live = _live(explorer, control, names[id(control)], value)
+        differ = int((np.abs(live.astype(int) - pixels).max(axis=-1) > 0).sum())
+        assert differ == 0, (f"{cls.__name__}: {control.description or type(control).__name__}"
+                             f" = {value!r}: {differ} pixels differ from the live frame")
+        assert len(drawn_at) == len(values) == len(prefetch.controls)
+    for control, value, why in refused:
+        # refused only where the explorer itself does not come back: the live path, set and
+        # set back, leaves a widget or the figure changed too
+        states, before = _states(explorer), np.asarray(
+            canvas.get_renderer().buffer_rgba()).copy()
+        _live(explorer, control, names[id(control)], value)
+        after = np.asarray(canvas.get_renderer().buffer_rgba())
+        assert _states(explorer) != states or not np.array_equal(after, before), \
+            f"{cls.__name__}: {control.description!r} = {value!r} refused ({why}), " \
+            "yet setting it live and back changes nothing"
+    assert len(refused) < len(chosen), f"{cls.__name__}: every picture refused: {refused}"
+
+
+class _Decoder:
+    """What the prefetcher sends the page, recorded."""
+
+    def __init__(self):
+        self.messages = []
+
+    def send(self, content, buffers=None):
+        self.messages.append((content, buffers))
+
+
+def _bezier():
+    from course_lib.widgets.bezier import BezierExplorer
+
+    explorer = BezierExplorer()
+    prefetch = _prefetch.attach(explorer)
+    explorer.fig.canvas.draw()
+    prefetch.decoder = _Decoder()
+    return explorer, prefetch
+
+
+def _control(prefetch, description):
+    return next(c for c, _ in prefetch.controls if c.description == description)
+
+
+def test_the_plan_takes_one_step_of_every_control_then_goes_further_along_the_one_moved():
+    explorer, prefetch = _bezier()
+    t = _control(prefetch, "t")
+    first = [(c.description, v) for c, v, _ in prefetch.plan()]
+    # untouched: one step either side of the slider, the other state of each check box
+    assert first[:2] == [("t", 0.39), ("t", 0.41)]
+    assert len(first) == 2 + sum(isinstance(c, w.Checkbox) for c, _ in prefetch.controls)
+    t.value = 0.5                                   # the student moves t
+    plan = [(c.description, v) for c, v, _ in prefetch.plan()]
+    assert plan[:2] == [("t", 0.49), ("t", 0.51)]
+    further = [v for d, v in plan[2:] if d == "t"]
+    assert further[:4] == [0.48, 0.52, 0.47, 0.53]
+    assert len(further) + 2 == _prefetch.FOCUS_FRAMES
+
+
+def test_a_step_sends_the_picture_and_the_values_the_page_will_have():
+    explorer, prefetch = _bezier()
+    control, value, values = prefetch.plan()[0]
+    prefetch.step()
+    (content, buffers), = prefetch.decoder.messages
+    assert content["type"] == "frame" and content["state"] == values
+    assert content["epoch"] == 0
+    picture = np.asarray(Image.open(io.BytesIO(buffers[0])).convert("RGB"))
+    live = _live(explorer, control, "value", value)[..., :3]
+    assert np.array_equal(picture, live)
+    assert prefetch.key(values) in prefetch.sent
+    assert prefetch.plan()[0][:2] != (control, value)            # not drawn twice
+
+
+def test_a_kernel_frame_unlike_the_picture_sent_for_its_values_clears_the_page():
+    explorer, prefetch = _bezier()
+    t = _control(prefetch, "t")
+    prefetch.step()                                  # t = 0.39 drawn ahead
+    canvas = explorer.fig.canvas
+    t.value = 0.39                                   # the student goes there
+    frame = np.asarray(canvas.get_renderer().buffer_rgba())
+    prefetch.frame_sent(frame)                       # the kernel's frame agrees: kept
+    assert prefetch.sent and prefetch.decoder.messages[-1][0]["type"] == "frame"
+    prefetch.frame_sent(255 - frame)                 # it does not (a point moved meanwhile)
+    assert prefetch.decoder.messages[-1][0] == {"type": "clear"} and not prefetch.sent
+
+
+def test_the_mouse_let_go_on_the_figure_makes_every_picture_sent_stale():
+    explorer, prefetch = _bezier()
+    prefetch.step()
+    assert prefetch.sent
+    prefetch._mouse(explorer.fig.canvas, {"type": "motion_notify"}, [])
+    assert prefetch.sent and prefetch.epoch == 0
+    prefetch._mouse(explorer.fig.canvas, {"type": "button_release"}, [])
+    assert not prefetch.sent and prefetch.epoch == 1
+    prefetch.step()
+    assert prefetch.decoder.messages[-1][0]["epoch"] == 1
+
+
+def test_a_kernel_frame_carries_the_values_it_shows_once_a_page_keeps_pictures():
+    explorer, prefetch = _bezier()
+    canvas = explorer.fig.canvas
+    sent = []
+    canvas.send = lambda content, buffers=None: sent.append(json.loads(content["data"]))
+    canvas._course_shown = True
+    canvas._course_regions = True
+    _control(prefetch, "t").value = 0.7
+    canvas.draw()
+    assert sent[-1]["type"] == "binary" and sent[-1]["state"] == prefetch.values()
+    assert sent[-1]["epoch"] == 0
+    prefetch.decoder = None                          # a new page, not ready yet
+    _control(prefetch, "t").value = 0.6
+    canvas.draw()
+    assert "state" not in sent[-1]
+
+
+def test_a_picture_whose_explorer_does_not_come_back_is_refused_and_the_control_skipped():
+    explorer, prefetch = _bezier()
+    t = _control(prefetch, "t")
+    calls = []
+    moving = explorer.blitter.artists[0]
+
+    def drift(change):              # an update with a memory the model does not hold
+        calls.append(change["new"])
+        moving.set_alpha(1.0 - 0.1 * len(calls))
+        explorer.update()
+    t.observe(drift, names="value")
+    prefetch.step()
+    assert id(t) in prefetch.skip and prefetch.enabled
+    assert [m for m, _ in prefetch.decoder.messages if m["type"] == "frame"] == []
+    assert all(c is not t for c, _, _ in prefetch.plan())
+
+
+def test_values_are_compared_as_the_page_compares_them():
+    key = _prefetch.Prefetcher.key
+    prefetch = type("P", (), {"values": lambda self: None})()
+    assert key(prefetch, [0.1 + 0.2, 3, True, "a", [1.0, 2.5]]) == \
+        key(prefetch, [0.3, 3, True, "a", (1, 2.5)])
+    assert key(prefetch, [0.3]) != key(prefetch, [0.31])
+    assert zlib.crc32(b"") == 0                      # the checksum used for pictures
