@@ -149,8 +149,9 @@ def _whole_frames(canvas):
             pixels = pixels[y0:y1, x0:x1]
             canvas._course_place = (int(x0), int(y0))
         prefetch = getattr(canvas, "_course_prefetch", None)
-        if prefetch is not None and prefetch.decoder is not None:
-            prefetch.frame_sent(canvas._course_last)
+        if prefetch is not None and prefetch.decoder is not None and \
+                prefetch.frame_drawn(canvas._course_last):
+            return None                          # the page holds this picture: told so
         if pixels[..., 3].min() == 255:
             pixels = pixels[..., :3]
         with BytesIO() as png:
@@ -211,11 +212,12 @@ const canon = (v) => (typeof v === 'number' ? Number(v.toPrecision(10))
                       : Array.isArray(v) ? v.map(canon) : v);
 const keyOf = (values) => JSON.stringify(values.map(canon));
 
-function paint(canvas, source, key) {
+function paint(canvas, source, key, fromKept) {
   const kept = canvas.__course;
   if (kept) {                        // the values of the pictures painted, newest last
     kept.painted.push(key);
     if (kept.painted.length > 200) kept.painted.shift();
+    kept.displayed = fromKept ? key : null;
   }
   const context = canvas.offscreen_context;
   context.clearRect(0, 0, canvas.offscreen_canvas.width, canvas.offscreen_canvas.height);
@@ -249,7 +251,7 @@ function patch(proto) {
         if (!pictures) {
           this._for_each_view((view) => view.update_canvas());
         } else if (pictures.kernelFrame(msg)) {
-          paint(this, target, pictures.kernelKey);
+          paint(this, target, pictures.kernelKey, false);
         }  // else: drawn for values the page has already left; the frame for its values follows
       }).catch(() => {});
   };
@@ -258,7 +260,8 @@ function patch(proto) {
 // The pictures the kernel drew ahead (course_lib/_prefetch.py), by the values of every control
 function pictures(canvas, controls) {
   const p = {canvas, entries: new Map(), decoded: [], epoch: 0, need: 0, pressed: false,
-             kernelKey: null, copy: null, shown: 0, missed: 0, stale: 0, painted: []};
+             kernelKey: null, copy: null, shown: 0, missed: 0, stale: 0, painted: [],
+             displayed: null, same: 0};
   p.current = () => keyOf(controls.map(([model, name]) => model.get(name)));
   p.kernelCanvas = () => {           // the kernel's last frame, whatever the page shows
     const {width, height} = canvas.offscreen_canvas;
@@ -274,6 +277,8 @@ function pictures(canvas, controls) {
     p.kernelKey = msg.state ? keyOf(msg.state) : null;
     const now = !msg.state || p.kernelKey === p.current();
     if (!now) p.stale += 1;
+    // (a frame the kernel sends is never the kept picture on the screen: for that one it
+    // sends "same")
     return now;
   };
   const release = (entry) => {
@@ -281,6 +286,7 @@ function pictures(canvas, controls) {
     if (entry) { entry.bitmap = null; entry.decoding = null; }
   };
   p.forget = () => {
+    p.displayed = null;
     for (const entry of p.entries.values()) release(entry);
     p.entries.clear();
     p.decoded = [];
@@ -302,6 +308,28 @@ function pictures(canvas, controls) {
     }
     return entry.decoding;
   };
+  // the kernel's frame is the kept picture for msg.state: the page copies it, in the order
+  // of the frames, instead of receiving it again
+  p.sameAs = (msg, model) => {
+    const key = keyOf(msg.state);
+    canvas.__coursePainted = (canvas.__coursePainted || Promise.resolve()).then(async () => {
+      p.epoch = Math.max(p.epoch, msg.epoch);
+      const entry = p.entries.get(key);
+      const bitmap = entry && (entry.bitmap || await p.decode(key, entry));
+      if (!bitmap) {                 // not kept after all: ask for the whole frame
+        p.kernelKey = null;
+        model.send({type: 'whole', state: msg.state});
+        return;
+      }
+      const copy = p.kernelCanvas();
+      const context = copy.getContext('2d');
+      context.clearRect(0, 0, copy.width, copy.height);
+      context.drawImage(bitmap, 0, 0);
+      p.kernelKey = key;
+      p.same += 1;
+      if (key === p.current() && p.displayed !== key) paint(canvas, copy, key, false);
+    }).catch(() => {});
+  };
   p.receive = (msg, buffers) => {
     if (msg.type === 'clear') return p.forget();
     if (msg.type !== 'frame') return;
@@ -322,17 +350,17 @@ function pictures(canvas, controls) {
     const entry = p.entries.get(key);
     if (entry && entry.bitmap) {
       p.touch(key);
-      paint(canvas, entry.bitmap, key);
+      paint(canvas, entry.bitmap, key, true);
       p.shown += 1;
     } else if (entry) {
       p.decode(key, entry).then((bitmap) => {
         if (bitmap && !p.pressed && p.current() === key) {
-          paint(canvas, bitmap, key);
+          paint(canvas, bitmap, key, true);
           p.shown += 1;
         }
       });
     } else if (p.copy && p.kernelKey === key) {
-      paint(canvas, p.copy, key);    // back to the values of the kernel's last frame
+      paint(canvas, p.copy, key, false);  // back to the values of the kernel's last frame
     } else {
       p.missed += 1;
     }
@@ -370,7 +398,8 @@ export default {
           canvas.__course = kept;
           // the browser tests and the benchmark read how often a kept picture was shown
           (window.__coursePictures = window.__coursePictures || []).push(kept);
-          model.on('msg:custom', (msg, buffers) => kept.receive(msg, buffers || []));
+          model.on('msg:custom', (msg, buffers) => (msg.type === 'same'
+            ? kept.sameAs(msg, model) : kept.receive(msg, buffers || [])));
           for (const [control, name] of controls) control.on(`change:${name}`, kept.show);
         }
         model.send({type: 'ready'});
@@ -442,6 +471,15 @@ def _decoder_class():
                 self.on_msg(self._on_ready)
 
             def _on_ready(self, widget, content, buffers):
+                if isinstance(content, dict) and content.get("type") == "whole":
+                    # the page did not keep a picture the kernel counted on: the next
+                    # frame whole, and that picture no longer counted on
+                    prefetch = getattr(self.canvas, "_course_prefetch", None)
+                    if prefetch is not None:
+                        prefetch.sent.pop(prefetch.key(content.get("state") or []), None)
+                    self.canvas._course_last = None
+                    self.canvas._png_is_old = True
+                    self.canvas.draw_idle()
                 if isinstance(content, dict) and content.get("type") == "ready":
                     # frames from now on are painted in order; the next one is whole (the
                     # one before may have been dropped by ipympl's own handler)

@@ -110,8 +110,8 @@ def _plain(value):
 
 def candidates(control, name):
     """The values of one control worth drawing ahead, nearest to its value first (its own
-    value excluded): every step of a linear slider, every option of a choice, the other state
-    of a check box. Others (log sliders, ranges, text) give none.
+    value excluded): every step of a linear slider or a selection slider, the other state of a
+    check box. Others (menus and rows of choices, log sliders, ranges, text) give none.
 
     Examples
     --------
@@ -120,8 +120,10 @@ def candidates(control, name):
     [1, 3, 0, 4]
     >>> candidates(w.Checkbox(True), "value")
     [False]
-    >>> candidates(w.ToggleButtons(options=["a", "b", "c"], index=0), "index")
+    >>> candidates(w.SelectionSlider(options=["a", "b", "c"], index=0), "index")
     [1, 2]
+    >>> candidates(w.Dropdown(options=["a", "b", "c"], index=0), "index")
+    []
     """
     import ipywidgets as w
 
@@ -130,6 +132,10 @@ def candidates(control, name):
     if isinstance(control, (w.Checkbox, w.ToggleButton)):
         return [not control.value]
     if name == "index":
+        if not isinstance(control, w.SelectionSlider):
+            # a menu or a row of choices may replace the explorer's model (a data set, a
+            # preset): drawn only live
+            return []
         n, now = len(control.options), control.index
         if not isinstance(now, int) or n > 200:
             return []
@@ -217,6 +223,13 @@ def _snapshot(explorer):
     return restore
 
 
+def _same(a, b):
+    try:
+        return bool(a is b or a == b)
+    except Exception:                        # arrays and the like: compared by identity
+        return False
+
+
 def _pixels(canvas):
     return np.asarray(canvas.get_renderer().buffer_rgba()).copy()
 
@@ -256,8 +269,10 @@ def render_at(explorer, settings):
     before = _pixels(canvas)
     states = _states(tree)
     saved = {c: getattr(c, n) for c, n in every}
+    widgets = {c: {k: c._trait_values.get(k) for k in c.keys} for c, _ in every}
     restore = _snapshot(explorer)
     values = None
+    by_hand = False
     with _held(canvas) as requests:
         try:
             for control, value in settings.items():
@@ -278,9 +293,17 @@ def render_at(explorer, settings):
             restore()
             if requests or (blitter is not None and blitter.background is None):
                 canvas.draw()
-            if not np.array_equal(_pixels(canvas), before):
-                # a control set back changed the model again (a preset chosen anew): draw
+            if not np.array_equal(_pixels(canvas), before) or _states(tree) != states:
+                # setting the controls back set others in turn (a preset chosen anew resets
+                # the selected point): put every control's traits back as they were without
+                # telling anyone (the page never saw them change), then the model, and draw
                 # the model as it was
+                by_hand = True
+                for control, traits in widgets.items():
+                    for name, value in traits.items():
+                        if not _same(control._trait_values.get(name), value):
+                            control._trait_values[name] = value
+                restore()
                 requests.clear()
                 explorer.update()
                 if requests or (blitter is not None and blitter.background is None):
@@ -293,6 +316,10 @@ def render_at(explorer, settings):
             widget.send_state()
         raise NotPrefetchable(f"{len(changed)} widget(s) not the same after setting the "
                               "values back")
+    if by_hand:
+        # back, but only by hand: setting this control moves others, so it is drawn live
+        raise NotPrefetchable("the explorer came back only when its controls were put back "
+                              "without their callbacks")
     return pixels, values
 
 
@@ -381,14 +408,21 @@ class Prefetcher:
             self.sent.clear()
             self.spent = 0.0
 
-    def frame_sent(self, pixels):
-        """The kernel sends a frame of the current values: check it against the picture sent
-        for them, if any (a difference clears both sides), and prefetch again later."""
+    def frame_drawn(self, pixels):
+        """The kernel has drawn a frame of the current values: if the page was sent this very
+        picture for them, tell it so and return True (the frame need not be sent); if it was
+        sent a different one, clear both sides (a point moved meanwhile). Prefetch again
+        later."""
         key = self.key()
         crc = self.sent.get(key)
-        if crc is not None and crc != _crc(pixels):
-            self.clear()
         self.wake()
+        if crc is None:
+            return False
+        if crc != _crc(pixels):
+            self.clear()
+            return False
+        self.decoder.send({"type": "same", "state": self.values(), "epoch": self.epoch})
+        return True
 
     def clear(self):
         self.sent.clear()

@@ -164,17 +164,43 @@ def test_a_step_sends_the_picture_and_the_values_the_page_will_have():
     assert prefetch.plan()[0][:2] != (control, value)            # not drawn twice
 
 
-def test_a_kernel_frame_unlike_the_picture_sent_for_its_values_clears_the_page():
+def test_a_kernel_frame_is_not_sent_again_when_the_page_holds_it_and_clears_it_if_unlike():
     explorer, prefetch = _bezier()
     t = _control(prefetch, "t")
     prefetch.step()                                  # t = 0.39 drawn ahead
     canvas = explorer.fig.canvas
-    t.value = 0.39                                   # the student goes there
+    t.value = 0.5                                    # values never drawn ahead: sent
+    assert prefetch.frame_drawn(np.asarray(canvas.get_renderer().buffer_rgba())) is False
+    t.value = 0.39                                   # the student goes to the kept one
     frame = np.asarray(canvas.get_renderer().buffer_rgba())
-    prefetch.frame_sent(frame)                       # the kernel's frame agrees: kept
-    assert prefetch.sent and prefetch.decoder.messages[-1][0]["type"] == "frame"
-    prefetch.frame_sent(255 - frame)                 # it does not (a point moved meanwhile)
+    assert prefetch.frame_drawn(frame) is True       # the same picture: only named
+    assert prefetch.decoder.messages[-1][0] == {"type": "same", "state": prefetch.values(),
+                                                "epoch": 0}
+    assert prefetch.frame_drawn(255 - frame) is False    # unlike it (a point moved)
     assert prefetch.decoder.messages[-1][0] == {"type": "clear"} and not prefetch.sent
+
+
+def test_the_frame_the_page_holds_is_named_not_sent_and_sent_whole_if_it_asks():
+    explorer, prefetch = _bezier()
+    canvas = explorer.fig.canvas
+    sent = []
+    canvas.send = lambda content, buffers=None: sent.append(json.loads(content["data"]))
+    canvas._course_shown = True
+    canvas._course_regions = True
+    canvas.draw()                                    # the page has the first frame
+    prefetch.step()                                  # t = 0.39 drawn ahead
+    before = len(sent)
+    _control(prefetch, "t").value = 0.39
+    assert len(sent) == before, "the kept picture was sent again"
+    assert prefetch.decoder.messages[-1][0]["type"] == "same"
+    # the page had not kept it: it asks for the whole frame
+    from course_lib._canvas import _decoder_class
+
+    decoder = _decoder_class()(canvas=canvas, controls=prefetch.spec())
+    canvas.draw_idle = canvas.draw                   # no kernel loop here: draw at once
+    decoder._on_ready(decoder, {"type": "whole", "state": prefetch.values()}, [])
+    assert sent[-1]["type"] == "binary" and "x" not in sent[-1], sent[-1]
+    assert sent[-1]["state"] == prefetch.values()
 
 
 def test_the_mouse_let_go_on_the_figure_makes_every_picture_sent_stale():

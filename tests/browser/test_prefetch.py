@@ -1,7 +1,8 @@
 """Pictures drawn ahead (course_lib/_prefetch.py) in a real browser: a slider step is answered
-from the page's kept pictures at once, each kept picture is the one the kernel then sends for
-the same values, a frame the page has already moved past is not painted, and the mouse on the
-figure (a control point dragged) throws the kept pictures away until new ones come."""
+from the page's kept pictures at once, each kept picture is the one the kernel then draws for
+the same values (it finds the same checksum and names the picture instead of sending it), a
+frame the page has already moved past is not painted, and the mouse on the figure (a control
+point dragged) throws the kept pictures away until new ones come."""
 import json
 import time
 
@@ -15,7 +16,7 @@ LESSON = "notebooks/ch07_curves_surfaces.ipynb"
 _KEPT = "(id) => (window.__coursePictures || []).find((p) => p.ids[0] === id)"
 
 _STATS = "(id) => { const p = (%s)(id); return p && {entries: p.entries.size, shown: p.shown, " \
-         "stale: p.stale, pressed: p.pressed, need: p.need, epoch: p.epoch, " \
+         "stale: p.stale, same: p.same, pressed: p.pressed, need: p.need, epoch: p.epoch, " \
          "current: p.current(), kernel: p.kernelKey}; }" % _KEPT
 
 # The kept picture for the page's current values against the kernel's last frame (for the
@@ -87,7 +88,10 @@ def test_a_slider_step_is_answered_by_a_kept_picture_that_the_kernel_then_confir
         # painted in the key's own handler: before any frame could come from the kernel
         assert after["shown"] == before["shown"] + 1, (step, before, after)
         assert after["current"] != before["current"]
-        _steady(page, ident)
+        steady = _steady(page, ident)
+        # the kernel drew the step itself and found it the very picture kept (same checksum):
+        # it named it instead of sending it again
+        assert steady["same"] > before["same"], (step, before, steady)
         got = page.evaluate(_COMPARE, ident)
         assert got["sameValues"], got
         assert got["kept"] == 0, f"step {step}: the kept picture differs from the kernel's " \
