@@ -8,18 +8,20 @@ already in the page costs none of it.
 
 So while the kernel has nothing else to do, a :class:`Prefetcher` draws the explorer's figure
 at the values the student is likely to choose next (the neighbours of the slider moved last,
-one step and then further out; one step of every other control) and sends each picture to the
-page with the values of *every* control it was drawn at. The page keeps them
+one step and then further out; one step of every other slider, the other state of each check
+box; never a menu, which may replace the model) and sends each picture to the page with the
+values of *every* control it was drawn at. The page keeps them
 (:data:`course_lib._canvas._DECODER_ESM`); when a control changes in the browser and a picture
 for the page's new values is there, the page paints it at once, and the kernel's own frame
-follows a moment later (the text panels come with it). A kernel frame is painted only if it
+follows a moment later (the text panels come with it; when its picture is the one kept, the
+kernel only names it, and the page copies the kept one). A kernel frame is painted only if it
 belongs to the values the page shows, so a stale frame never overwrites a newer one.
 
 A prefetched picture must be the picture the kernel would draw. :func:`render_at` draws it
 with every widget message and frame held back, then sets the values back and checks that the
-figure and every widget of the explorer are exactly as before; an explorer whose picture
-depends on more than its controls (a timing in the panel, a random draw) fails that check and
-is not prefetched again. What the controls cannot show (a point dragged, a 3D view turned)
+figure and every widget of the explorer are exactly as before; a control that fails that
+check (its picture depends on more than the controls, or setting it moves other controls) is
+put back by hand and not drawn ahead again. What the controls cannot show (a point dragged, a 3D view turned)
 clears the pictures on both sides: the page clears them when the mouse goes down on the
 figure and accepts new ones only once the kernel has seen the mouse go up; the kernel clears
 its list when it sees it, and whenever one of its frames differs from the picture it sent for
