@@ -261,7 +261,20 @@ function patch(proto) {
 function pictures(canvas, controls) {
   const p = {canvas, entries: new Map(), decoded: [], epoch: 0, need: 0, pressed: false,
              kernelKey: null, copy: null, shown: 0, missed: 0, stale: 0, painted: [],
-             displayed: null, same: 0};
+             displayed: null, same: 0, seq: 0, seen: new Map(), shownSeq: 0};
+  // when the page was last at each set of values (a count of its changes): a kernel frame
+  // for values the page reached after the picture on the screen is newer, and painted even
+  // if the page has moved on since (a slider dragged faster than the kernel draws); one for
+  // values reached before it is older, and never painted (the picture never goes back)
+  p.newer = (key) => {
+    if (key === null || key === p.current()) return true;
+    const at = p.seen.get(key);
+    return at === undefined || at > p.shownSeq;
+  };
+  p.reached = (key) => {             // the picture on the screen is that of `key`
+    const at = key === null ? undefined : p.seen.get(key);
+    p.shownSeq = key === p.current() ? p.seq : Math.max(p.shownSeq, at === undefined ? 0 : at);
+  };
   p.current = () => keyOf(controls.map(([model, name]) => model.get(name)));
   p.kernelCanvas = () => {           // the kernel's last frame, whatever the page shows
     const {width, height} = canvas.offscreen_canvas;
@@ -275,8 +288,8 @@ function pictures(canvas, controls) {
   p.kernelFrame = (msg) => {         // whether to show it: it shows the page's values
     if (msg.epoch !== undefined) p.epoch = Math.max(p.epoch, msg.epoch);
     p.kernelKey = msg.state ? keyOf(msg.state) : null;
-    const now = !msg.state || p.kernelKey === p.current();
-    if (!now) p.stale += 1;
+    const now = !msg.state || p.newer(p.kernelKey);
+    if (now) p.reached(p.kernelKey); else p.stale += 1;
     // (a frame the kernel sends is never the kept picture on the screen: for that one it
     // sends "same")
     return now;
@@ -327,7 +340,10 @@ function pictures(canvas, controls) {
       context.drawImage(bitmap, 0, 0);
       p.kernelKey = key;
       p.same += 1;
-      if (key === p.current() && p.displayed !== key) paint(canvas, copy, key, false);
+      if (p.displayed !== key && p.newer(key)) {
+        p.reached(key);
+        paint(canvas, copy, key, false);
+      }
     }).catch(() => {});
   };
   p.receive = (msg, buffers) => {
@@ -345,21 +361,28 @@ function pictures(canvas, controls) {
     if (p.decoded.length < KEEP_DECODED) p.decode(key, entry);   // the nearest come first
   };
   p.show = () => {                   // a control changed in the page
-    if (p.pressed) return;
     const key = p.current();
+    p.seq += 1;
+    p.seen.delete(key);
+    p.seen.set(key, p.seq);
+    if (p.seen.size > 1000) p.seen.delete(p.seen.keys().next().value);
+    if (p.pressed) return;
     const entry = p.entries.get(key);
     if (entry && entry.bitmap) {
       p.touch(key);
+      p.reached(key);
       paint(canvas, entry.bitmap, key, true);
       p.shown += 1;
     } else if (entry) {
       p.decode(key, entry).then((bitmap) => {
         if (bitmap && !p.pressed && p.current() === key) {
+          p.reached(key);
           paint(canvas, bitmap, key, true);
           p.shown += 1;
         }
       });
     } else if (p.copy && p.kernelKey === key) {
+      p.reached(key);
       paint(canvas, p.copy, key, false);  // back to the values of the kernel's last frame
     } else {
       p.missed += 1;
