@@ -232,7 +232,7 @@ def _same(a, b):
         return False
 
 
-def _pixels(canvas):
+def _picture(canvas):
     return np.asarray(canvas.get_renderer().buffer_rgba()).copy()
 
 
@@ -268,7 +268,7 @@ def render_at(explorer, settings):
     tree = [w for w in _tree(explorer.widget) if w is not canvas]
     blitter = explorer.blitter
     background = blitter.background if blitter is not None else None
-    before = _pixels(canvas)
+    before = _picture(canvas)
     states = _states(tree)
     saved = {c: getattr(c, n) for c, n in every}
     widgets = {c: {k: c._trait_values.get(k) for k in c.keys} for c, _ in every}
@@ -281,7 +281,7 @@ def render_at(explorer, settings):
                 setattr(control, names[id(control)], value)
             if requests or (blitter is not None and blitter.background is None):
                 canvas.draw()
-            pixels = _pixels(canvas)
+            pixels = _picture(canvas)
             values = [_plain(getattr(c, n)) for c, n in every]
         finally:
             requests.clear()
@@ -295,7 +295,7 @@ def render_at(explorer, settings):
             restore()
             if requests or (blitter is not None and blitter.background is None):
                 canvas.draw()
-            if not np.array_equal(_pixels(canvas), before) or _states(tree) != states:
+            if not np.array_equal(_picture(canvas), before) or _states(tree) != states:
                 # setting the controls back set others in turn (a preset chosen anew resets
                 # the selected point): put every control's traits back as they were without
                 # telling anyone (the page never saw them change), then the model, and draw
@@ -310,7 +310,7 @@ def render_at(explorer, settings):
                 explorer.update()
                 if requests or (blitter is not None and blitter.background is None):
                     canvas.draw()
-    if not np.array_equal(_pixels(canvas), before):
+    if not np.array_equal(_picture(canvas), before):
         raise NotPrefetchable("the figure is not the same after setting the values back")
     changed = [w for w, s in zip(tree, states) if w.get_state() != s]
     if changed:

@@ -1,6 +1,7 @@
 """The browser benchmark works (one explorer, few samples): it must not rot between real
 measurements. Behaviour only, no timing: every input reached a frame, the frame could be
-followed back through the kernel to its input, and the report has its three tables."""
+followed back through the kernel to its input (or came from a picture kept in the page), and
+the report has its three tables."""
 import json
 import math
 import subprocess
@@ -36,8 +37,14 @@ def test_the_browser_benchmark_follows_inputs_to_frames():
         assert row["samples"] >= 3, f"{row['input']}: most single inputs gave no frame"
         assert 0 < row["median_ms"] <= row["p90_ms"] < 5000
         assert row["fps"] > 0 and row["moves"] > 10, row
-        # every stage of the path was seen, and the stages add up to no more than the whole
         stages = row["breakdown"]
+        if row["kept_single"] == row["samples"]:
+            # every input answered by a picture kept in the page (course_lib/_prefetch.py):
+            # no frame came from the kernel to follow
+            assert row["input"].startswith("slider"), row
+            assert all(v is None for v in stages.values()), stages
+            continue
+        # every stage of the path was seen, and the stages add up to no more than the whole
         assert all(v is not None and v > -2 for v in stages.values()), stages
         assert sum(stages.values()) <= 1.5 * row["p90_ms"] + 5, (stages, row["p90_ms"])
     (lesson,) = lessons
