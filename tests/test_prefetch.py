@@ -4,11 +4,8 @@ The page shows a kept picture in place of the kernel's frame, so each one must b
 frame the kernel draws when the student really sets that value; drawing one must leave the
 explorer, its widgets and its figure as they were, and send nothing but the picture itself.
 """
-import importlib
-import inspect
 import io
 import json
-import pkgutil
 import zlib
 
 import ipywidgets as w
@@ -16,25 +13,12 @@ import numpy as np
 import pytest
 from PIL import Image
 
-import course_lib.widgets as widgets
 from course_lib import _prefetch
-from course_lib.widgets._base import Explorer
+from test_widget_frames import _explorers      # every explorer class of course_lib.widgets
 
 #: Plan entries checked per explorer: the first steps a student takes, both sides of each
 #: control, and one further out.
 CHECKED = 6
-
-
-def _explorers():
-    found = []
-    for info in pkgutil.iter_modules(widgets.__path__):
-        if info.name.startswith("_"):
-            continue
-        module = importlib.import_module(f"course_lib.widgets.{info.name}")
-        found += [cls for _, cls in inspect.getmembers(module, inspect.isclass)
-                  if issubclass(cls, Explorer) and cls is not Explorer
-                  and cls.__module__ == module.__name__]
-    return found
 
 
 def _live(explorer, control, name, value):
@@ -131,6 +115,15 @@ def _bezier():
     return explorer, prefetch
 
 
+def _page_messages(canvas):
+    """What the canvas sends a page that has shown it and places rectangles, recorded."""
+    sent = []
+    canvas.send = lambda content, buffers=None: sent.append(json.loads(content["data"]))
+    canvas._course_shown = True
+    canvas._course_regions = True
+    return sent
+
+
 def _control(prefetch, description):
     return next(c for c, _ in prefetch.controls if c.description == description)
 
@@ -183,10 +176,7 @@ def test_a_kernel_frame_is_not_sent_again_when_the_page_holds_it_and_clears_it_i
 def test_the_frame_the_page_holds_is_named_not_sent_and_sent_whole_if_it_asks():
     explorer, prefetch = _bezier()
     canvas = explorer.fig.canvas
-    sent = []
-    canvas.send = lambda content, buffers=None: sent.append(json.loads(content["data"]))
-    canvas._course_shown = True
-    canvas._course_regions = True
+    sent = _page_messages(canvas)
     canvas.draw()                                    # the page has the first frame
     prefetch.step()                                  # t = 0.39 drawn ahead
     before = len(sent)
@@ -218,10 +208,7 @@ def test_the_mouse_let_go_on_the_figure_makes_every_picture_sent_stale():
 def test_a_kernel_frame_carries_the_values_it_shows_once_a_page_keeps_pictures():
     explorer, prefetch = _bezier()
     canvas = explorer.fig.canvas
-    sent = []
-    canvas.send = lambda content, buffers=None: sent.append(json.loads(content["data"]))
-    canvas._course_shown = True
-    canvas._course_regions = True
+    sent = _page_messages(canvas)
     _control(prefetch, "t").value = 0.7
     canvas.draw()
     assert sent[-1]["type"] == "binary" and sent[-1]["state"] == prefetch.values()
