@@ -8,8 +8,9 @@ already in the page costs none of it.
 
 So while the kernel has nothing else to do, a :class:`Prefetcher` draws the explorer's figure
 at the values the student is likely to choose next (the neighbours of the slider moved last,
-one step and then further out; one step of every other slider, the other state of each check
-box; never a menu, which may replace the model) and sends each picture to the page with the
+one step and then further out; one step of every other slider, linear or logarithmic, and of
+either end of a range slider; the other state of each check box; never a menu, which may
+replace the model) and sends each picture to the page with the
 values of *every* control it was drawn at. The page keeps them
 (:data:`course_lib._canvas._DECODER_ESM`); when a control changes in the browser and a picture
 for the page's new values is there, the page paints it at once, and the kernel's own frame
@@ -112,8 +113,9 @@ def _plain(value):
 
 def candidates(control, name):
     """The values of one control worth drawing ahead, nearest to its value first (its own
-    value excluded): every step of a linear slider or a selection slider, the other state of a
-    check box. Others (menus and rows of choices, log sliders, ranges, text) give none.
+    value excluded): every step of a linear slider, a log slider (its exponent's steps) or a
+    selection slider, one end of a range slider moved a step at a time, the other state of a
+    check box. Others (menus and rows of choices, text) give none.
 
     Examples
     --------
@@ -124,6 +126,10 @@ def candidates(control, name):
     [False]
     >>> candidates(w.SelectionSlider(options=["a", "b", "c"], index=0), "index")
     [1, 2]
+    >>> candidates(w.FloatLogSlider(value=0.01, base=10, min=-3, max=0, step=1), "value")
+    [0.001, 0.1, 1.0]
+    >>> candidates(w.IntRangeSlider(value=(2, 3), min=0, max=5), "value")
+    [(1, 3), (3, 3), (2, 2), (2, 4), (0, 3), (2, 5)]
     >>> candidates(w.Dropdown(options=["a", "b", "c"], index=0), "index")
     []
     """
@@ -143,17 +149,59 @@ def candidates(control, name):
             return []
         return sorted((k for k in range(n) if k != now), key=lambda k: (abs(k - now), k))
     if isinstance(control, (w.IntSlider, w.FloatSlider)):
-        low, high, step = control.min, control.max, control.step
-        if not step or step <= 0 or high <= low:
+        ks = _steps(control, control.value)
+        if ks is None:
+            return []
+        return [_on_grid(control, k) for k in ks]
+    if isinstance(control, w.FloatLogSlider):
+        # the page's slider moves the exponent by `step`; its value is base ** exponent
+        low, high, step, base = control.min, control.max, control.step, control.base
+        if not step or step <= 0 or high <= low or base <= 0 or base == 1 or control.value <= 0:
             return []
         count = int(round((high - low) / step))
-        here = int(round((control.value - low) / step))
-        ks = [k for d in range(1, min(count, FOCUS_FRAMES) + 1) for k in (here - d, here + d)
-              if 0 <= k <= count]
-        if isinstance(control, w.IntSlider):
-            return [int(low + k * step) for k in ks]
-        return [float(round(low + k * step, 12)) for k in ks]
+        exponent = np.log(control.value) / np.log(base)
+        here = int(round((exponent - low) / step))
+        ks = sorted((k for k in range(count + 1) if 0 < abs(k - here) <= FOCUS_FRAMES),
+                    key=lambda k: (abs(k - here), k))
+        return [float(base ** round(low + k * step, 12)) for k in ks]
+    if isinstance(control, (w.IntRangeSlider, w.FloatRangeSlider)):
+        # one end moved at a time, the ends never crossing: both ends' steps, nearest first
+        lo, hi = control.value
+        ends = [_steps(control, lo), _steps(control, hi)]
+        if None in ends:
+            return []
+        out = []
+        for d in range(1, FOCUS_FRAMES + 1):
+            for k in ends[0][2 * d - 2:2 * d]:
+                if _on_grid(control, k) <= hi:
+                    out.append((_on_grid(control, k), hi))
+            for k in ends[1][2 * d - 2:2 * d]:
+                if _on_grid(control, k) >= lo:
+                    out.append((lo, _on_grid(control, k)))
+        return out[:FOCUS_FRAMES]
     return []
+
+
+def _steps(control, value):
+    """The step numbers of a linear slider's positions around `value` (0 at its minimum),
+    nearest first, up to :data:`FOCUS_FRAMES` each side; None for a slider without steps."""
+    low, high, step = control.min, control.max, control.step
+    if not step or step <= 0 or high <= low:
+        return None
+    count = int(round((high - low) / step))
+    here = int(round((value - low) / step))
+    return [k for d in range(1, min(count, FOCUS_FRAMES) + 1) for k in (here - d, here + d)
+            if 0 <= k <= count]
+
+
+def _on_grid(control, k):
+    """The value of a linear slider's `k`-th position."""
+    import ipywidgets as w
+
+    value = control.min + k * control.step
+    if isinstance(control, (w.IntSlider, w.IntRangeSlider)):
+        return int(value)
+    return float(round(value, 12))
 
 
 @contextlib.contextmanager
@@ -447,16 +495,20 @@ class Prefetcher:
         if focus is None or not lists.get(id(focus)):
             focus = next((c for c, n in movable if lists[id(c)] and n == "value"
                           and not isinstance(c.value, bool)), None)
+        def near(c):
+            # a step either side: of each end of a range slider
+            return 4 if isinstance(c.value, tuple) else 2
+
         order = []
         if focus is not None:
-            order += [(focus, v) for v in lists[id(focus)][:2]]
+            order += [(focus, v) for v in lists[id(focus)][:near(focus)]]
         for c, _ in movable:
             if c is not focus:
-                order += [(c, v) for v in lists[id(c)][:2]]
+                order += [(c, v) for v in lists[id(c)][:near(c)]]
         if focus is not None and self.focus is not None:
             # further out only once the student has moved a control: an explorer nobody
             # touches costs a step either side of each control
-            order += [(focus, v) for v in lists[id(focus)][2:FOCUS_FRAMES]]
+            order += [(focus, v) for v in lists[id(focus)][near(focus):FOCUS_FRAMES]]
         now = self.values()
         index = {id(c): k for k, (c, _) in enumerate(self.controls)}
         out = []

@@ -16,8 +16,8 @@ from PIL import Image
 from course_lib import _prefetch
 from test_widget_frames import _explorers      # every explorer class of course_lib.widgets
 
-#: Plan entries checked per explorer: the first steps a student takes, both sides of each
-#: control, and one further out.
+#: Plan entries checked per explorer: the first steps a student takes, both sides of the
+#: control moved, and one further out (and then one step of every other control).
 CHECKED = 6
 
 
@@ -63,6 +63,10 @@ def test_a_picture_drawn_ahead_is_the_frame_drawn_live_and_changes_nothing(cls, 
     prefetch.focus = plan[0][0]                       # as after the student's first step
     plan = prefetch.plan()
     chosen = plan[:CHECKED - 1] + plan[-1:]
+    # and one step of every other control (log sliders, range sliders and check boxes too)
+    for entry in plan:
+        if all(entry[0] is not c for c, _, _ in chosen):
+            chosen.append(entry)
     refused = []
     for control, value, values in chosen:
         before, states = np.asarray(canvas.get_renderer().buffer_rgba()).copy(), \

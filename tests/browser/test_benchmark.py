@@ -37,6 +37,8 @@ def test_the_browser_benchmark_follows_inputs_to_frames():
         assert row["samples"] >= 3, f"{row['input']}: most single inputs gave no frame"
         assert 0 < row["median_ms"] <= row["p90_ms"] < 5000
         assert row["fps"] > 0 and row["moves"] > 10, row
+        # the input changed while it was dragged (the slider's read-out was followed)
+        assert 0 < row["changes_per_s"], row
         stages = row["breakdown"]
         if row["kept_single"] == row["samples"]:
             # every input answered by a picture kept in the page (course_lib/_prefetch.py):
@@ -56,3 +58,12 @@ def test_the_browser_benchmark_follows_inputs_to_frames():
     assert text.count("\n| CohenSutherlandExplorer |") == 4        # two rows, two tables
     assert f"| ch05_culling_hse | {explorers} |" in text
     assert not any(math.isnan(r["median_ms"]) for r in rows)
+
+
+def test_a_drag_keeps_up_at_30_fps_or_with_a_frame_for_every_change():
+    assert bench.fluent({"fps": 31, "changes_per_s": 60})
+    assert not bench.fluent({"fps": 20, "changes_per_s": 60})
+    # a slider of few values: four changes a second, each shown
+    assert bench.fluent({"fps": 4, "changes_per_s": 4})
+    assert not bench.fluent({"fps": 2, "changes_per_s": 4})
+    assert not bench.meets({"median_ms": 31, "fps": 60, "changes_per_s": 60})
