@@ -7,7 +7,6 @@ as JupyterLab does, and look at the thread the explorer's callback ran on, and a
 VTK explorer renders. The first test is the control: without course_lib.widgets the callback
 does run on the subshell's thread, so the check below can fail.
 """
-import io
 import time
 
 import numpy as np
@@ -140,20 +139,23 @@ def test_messages_of_other_kinds_or_other_widgets_are_never_merged():
 def test_a_vtk_explorer_moved_from_a_subshell_renders_its_picture(kernel):
     """The surface explorer (pyvista/VTK, an OpenGL context made on the main thread): its lift
     slider moved on a subshell must give a real picture of the patch, not a black frame."""
-    comm_id = run(kernel, "from course_lib.widgets.surface import SurfaceExplorer\n"
-                          "explorer = SurfaceExplorer()\nbefore = explorer.image.value\n"
+    comm_id = run(kernel, "%matplotlib widget\n"             # as every lesson starts
+                          "from course_lib.widgets.surface import SurfaceExplorer\n"
+                          "explorer = SurfaceExplorer()\nbefore = explorer.frame().copy()\n"
                           "print(explorer.lift.comm.comm_id)").strip()
     sid = subshell(kernel)
     for value in (-0.5, -1.0):           # the first is routed to the main thread anyway
         send_on_subshell(kernel, sid, comm_id, {"value": value})
         assert wait_for(kernel, "print(explorer.state.lift)", str(value)) == str(value)
-    pictures = run(kernel, "import base64; print(base64.b64encode(before).decode(), "
-                           "base64.b64encode(explorer.image.value).decode())").split()
+    # the frames the explorer's screen shows, before and after, as raw bytes and their shape
+    pictures = run(kernel, "import base64; print(explorer.frame().shape[0], "
+                           "explorer.frame().shape[1], base64.b64encode(before.tobytes()).decode(), "
+                           "base64.b64encode(explorer.frame().tobytes()).decode())").split()
     from base64 import b64decode
 
-    from PIL import Image
-    before, after = (np.asarray(Image.open(io.BytesIO(b64decode(p))).convert("RGB"), float)
-                     for p in pictures)
+    height, width = int(pictures[0]), int(pictures[1])
+    before, after = (np.frombuffer(b64decode(p), np.uint8).reshape(height, width, 3).astype(float)
+                     for p in pictures[2:])
     assert before.shape == after.shape
     # the background is white and the patch coloured: a black or noisy frame fails both
     assert (after.min(axis=-1) > 250).mean() > 0.3, "the white background is gone"

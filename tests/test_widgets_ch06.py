@@ -121,13 +121,15 @@ def test_simplification_scene_rejects_a_face_count_out_of_range():
 
 def test_simplification_slider_rerenders_the_mesh():
     ex = simplification.SimplificationExplorer()
-    before = ex.image.value
+    before = ex.frame().copy()
     ex.faces.value = 120
     s = simplification.scene(simplification.State(120))
     assert ex.poly.n_cells == 120 and np.allclose(ex.poly.points, s["vertices"])
     assert np.allclose(ex.poly["error"], s["errors"])
     assert ex.candidates.n_lines == simplification.TOP
-    assert ex.image.value != before and "120 faces" in ex.info.value
+    # the screen shows the plotter's new frame
+    assert np.array_equal(ex.frame(), ex.plotter.screenshot(return_img=True))
+    assert not np.array_equal(ex.frame(), before) and "120 faces" in ex.info.value
     assert ex.table.value.count("<tr>") == simplification.TOP + 1
     ex.plotter.close()
 

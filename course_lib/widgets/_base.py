@@ -563,8 +563,10 @@ class PlotterExplorer(Explorer):
     """An explorer that shows the frames of an off-screen pyvista plotter (``self.plotter``).
 
     The 3D explorers (isosurface, simplification, surface, texture) draw into a
-    :func:`course_lib.draw.offscreen_plotter` and show its frame as an image widget; this base
-    gives them one way to take that frame.
+    :func:`course_lib.draw.offscreen_plotter`; this base gives them one way to take its frame
+    (:meth:`picture`) and one to show it live (:meth:`screen`, :meth:`show`). The texture
+    explorer, which has a figure of its own beside the 3D view, shows its frames in an image
+    widget instead (an explorer whose pictures are drawn ahead has one canvas).
 
     Examples
     --------
@@ -588,6 +590,48 @@ class PlotterExplorer(Explorer):
     def png(self, dpi=None):
         """The current picture as PNG bytes (for readers without a kernel)."""
         return self.picture("png")
+
+    def screen(self):
+        """A matplotlib canvas, the size of the plotter's frames, that shows them in the widget
+        (:meth:`show`); returns the canvas for the explorer's layout, and it becomes
+        ``self.fig``'s.
+
+        Shown on a canvas rather than an image widget, the frames take the explorers' own path
+        to the page (pushed, decoded off the browser's main thread: :mod:`course_lib._canvas`)
+        and the page keeps the pictures the kernel draws ahead for the explorer's sliders
+        (:mod:`course_lib._prefetch`): a slider step is shown from the page's own copy,
+        instead of a round trip through the kernel and VTK.
+
+        Examples
+        --------
+        >>> from course_lib.widgets.isovalue import IsosurfaceExplorer
+        >>> explorer = IsosurfaceExplorer()
+        >>> explorer.frame().shape[:2] == tuple(explorer.plotter.window_size)[::-1]
+        True
+        """
+        from .. import draw
+
+        width, height = self.plotter.window_size
+        dpi = 100 * draw.lecture_scale()        # draw.figure multiplies by the same scale
+        self.fig = draw.figure(figsize=(width / dpi, height / dpi), dpi=100)
+        ax = self.fig.add_axes((0, 0, 1, 1))
+        ax.set_axis_off()
+        self._frame = ax.imshow(np.full((height, width, 3), 255, np.uint8), aspect="auto",
+                                interpolation="nearest", resample=False)
+        canvas = self.fig.canvas
+        if hasattr(canvas, "toolbar_visible"):
+            canvas.toolbar_visible = False          # nothing to pan or zoom in a picture
+        return canvas
+
+    def show(self):
+        """Render the plotter and show its frame on the :meth:`screen`."""
+        self.plotter.render()
+        self._frame.set_data(self.plotter.screenshot(return_img=True))
+        self.fig.canvas.draw_idle()
+
+    def frame(self):
+        """The plotter's frame the screen shows (height, width, 3) uint8."""
+        return np.asarray(self._frame.get_array())
 
 
 def pyvista_faces(triangles):

@@ -564,7 +564,8 @@ def _gradient(kind):
 class IsosurfaceExplorer(PlotterExplorer):
     """Marching cubes in 3D: isovalue, volume, consistent or classic table, camera.
 
-    The picture is rendered by pyvista off screen and shown as an image.
+    The picture is rendered by pyvista off screen and shown on a matplotlib canvas
+    (:meth:`PlotterExplorer.screen`).
 
     Examples
     --------
@@ -598,7 +599,7 @@ class IsosurfaceExplorer(PlotterExplorer):
         self.holes_actor = self.plotter.add_mesh(self.holes, color="#d0021b", line_width=6)
         self.box = pv.Box(bounds=(-1, 1, -1, 1, -1, 1)).outline()
         self.plotter.add_mesh(self.box, color="#9e9e9e", line_width=1)
-        self.image = w.Image(format="jpeg", layout=w.Layout(width="420px"))
+        screen = self.screen()
         self.volume = labelled(w.Dropdown, "volume", options=VOLUMES, value=self.state.volume)
         self.level = slider("isovalue", self.state.level, 0, 10, 0.1, readout_format=".3f")
         self.table = w.ToggleButtons(options=TABLES, value=self.state.table,
@@ -617,7 +618,7 @@ class IsosurfaceExplorer(PlotterExplorer):
                                             "azimuth": self.azimuth,
                                             "elevation": self.elevation}, self.update)
         self.info = panel(width="340px")
-        self.widget = beside(self.image, w.VBox([self.volume, self.level, self.table,
+        self.widget = beside(screen, w.VBox([self.volume, self.level, self.table,
                                                  self.azimuth, self.elevation, self.info]),
                              align="flex-start")
         self._draw(s)
@@ -653,5 +654,5 @@ class IsosurfaceExplorer(PlotterExplorer):
         a, e = np.radians([self.state.azimuth - 90.0, self.state.elevation])
         eye = 6.8 * np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
         self.plotter.camera_position = [tuple(eye), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0)]
-        self.image.value = self.picture("jpeg")
+        self.show()
         self.info.value = s["text"]

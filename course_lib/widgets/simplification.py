@@ -138,13 +138,13 @@ class SimplificationExplorer(PlotterExplorer):
         # the focal point a little to the right of the mesh: the mesh sits left of the colour bar
         right = 0.3 * np.array([0.55, 0.83, 0.0])
         self.plotter.camera_position = [(3.6, -2.4, 2.0) + right, right, (0, 0, 1)]
-        self.image = w.Image(format="jpeg", layout=w.Layout(width="420px"))
+        screen = self.screen()
         self.faces = slider("faces", self.state.faces, TARGET_FACES, START_FACES, 2,
                             kind=w.IntSlider)
         bind(self.state, {"faces": self.faces}, self.update)
         self.info = panel(width="380px")
         self.table = panel()
-        self.widget = beside(self.image, w.VBox([self.faces, self.info, self.table]),
+        self.widget = beside(screen, w.VBox([self.faces, self.info, self.table]),
                              align="flex-start")
         self._draw(s)
 
@@ -161,7 +161,7 @@ class SimplificationExplorer(PlotterExplorer):
         self.poly.set_active_scalars("error")
         self.candidates.copy_from(pv.PolyData(s["segments"].reshape(-1, 3),
                                               lines=_lines(len(s["segments"]))))
-        self.image.value = self.picture("jpeg")
+        self.show()
         self.info.value = (s["text"] + " Red: the cheapest edges in the priority queue "
                            "(the next collapses).")
         self.table.value = _queue_table(s["queue"])

@@ -165,12 +165,12 @@ class SimplificationComparisonExplorer(PlotterExplorer):
                                   scalar_bar_args=_style.scalar_bar("distance"))
             self.plotter.add_text(m, font_size=9, color="black")
             self.plotter.camera_position = [(3.2, -2.2, 1.8), (0, 0, 0), (0, 0, 1)]
-        self.image = w.Image(format="jpeg", layout=w.Layout(width="720px"))
+        screen = self.screen()
         self.faces = labelled(w.SelectionSlider, "faces", options=list(LEVELS),
                               value=self.state.faces, continuous_update=True)
         bind(self.state, {"faces": self.faces}, self.update)
         self.info = panel(width="720px")
-        self.widget = w.VBox([self.image, beside(self.faces, self.info, align="flex-start")])
+        self.widget = w.VBox([screen, beside(self.faces, self.info, align="flex-start")])
         self._draw(s)
 
     def update(self):
@@ -186,5 +186,5 @@ class SimplificationComparisonExplorer(PlotterExplorer):
             new.cell_data["error"] = r["face_error"]
             self.polys[m].copy_from(new)
             self.polys[m].set_active_scalars("error", preference="cell")
-        self.image.value = self.picture("jpeg")
+        self.show()
         self.info.value = s["text"]

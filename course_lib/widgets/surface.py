@@ -133,8 +133,9 @@ def _polyline_cells(lines):
 class SurfaceExplorer(PlotterExplorer):
     """Pick a control point and lift it, change its weight, switch the patch type, turn the view.
 
-    The picture is rendered by pyvista off screen and shown as an image, so it works wherever
-    the notebook runs (no GPU or display needed).
+    The picture is rendered by pyvista off screen and shown on a matplotlib canvas
+    (:meth:`PlotterExplorer.screen`), so it works wherever the notebook runs (no GPU or display
+    needed).
 
     Examples
     --------
@@ -173,7 +174,7 @@ class SurfaceExplorer(PlotterExplorer):
         self.iso = pv.PolyData(lines.reshape(-1, 3), lines=_polyline_cells(lines))
         self.plotter.add_mesh(self.iso, color="#595959", line_width=1)
         self._set_camera()
-        self.image = w.Image(format="jpeg", layout=w.Layout(width="440px"))
+        screen = self.screen()
         self.kind = w.ToggleButtons(options=KINDS, value=self.state.kind,
                                     style={"button_width": _style.button_width(*KINDS)})
         self.i = slider("point i", self.state.i, 0, SIZE - 1, 1, kind=w.IntSlider)
@@ -188,7 +189,7 @@ class SurfaceExplorer(PlotterExplorer):
                           "weight": self.weight, "azimuth": self.azimuth,
                           "elevation": self.elevation}, self._on_change)
         self.info = panel(width="360px")
-        self.widget = beside(self.image, w.VBox([self.kind, self.i, self.j, self.lift,
+        self.widget = beside(screen, w.VBox([self.kind, self.i, self.j, self.lift,
                                                  self.weight, self.azimuth, self.elevation,
                                                  self.info]), align="flex-start")
         self.weight.disabled = self.state.kind != "NURBS"
@@ -217,5 +218,5 @@ class SurfaceExplorer(PlotterExplorer):
         lines = np.concatenate([s["iso_u"], s["iso_v"]])
         self.iso.points = lines.reshape(-1, 3)
         self._set_camera()
-        self.image.value = self.picture("jpeg")
+        self.show()
         self.info.value = s["text"] + (" Blue: the part of the patch the lift moved.")
