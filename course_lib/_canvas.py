@@ -258,10 +258,14 @@ function patch(proto) {
 }
 
 // The pictures the kernel drew ahead (course_lib/_prefetch.py), by the values of every control
-function pictures(canvas, controls) {
+function pictures(canvas, controls, views) {
   const p = {canvas, entries: new Map(), decoded: [], epoch: 0, need: 0, pressed: false,
              kernelKey: null, copy: null, shown: 0, missed: 0, stale: 0, painted: [],
-             displayed: null, same: 0, seq: 0, seen: new Map(), shownSeq: 0};
+             displayed: null, same: 0, seq: 0, seen: new Map(), shownSeq: 0,
+             // each 3D axes: its box on the canvas (fractions, y down) and its view, [elev,
+             // azim], as the kernel last showed it or as the mouse turning it will make it
+             views: views.map((v) => ({box: v.box, value: v.view})), turn: null, turnUntil: 0,
+             turned: 0};
   // when the page was last at each set of values (a count of its changes): a kernel frame
   // for values the page reached after the picture on the screen is newer, and painted even
   // if the page has moved on since (a slider dragged faster than the kernel draws); one for
@@ -275,7 +279,17 @@ function pictures(canvas, controls) {
     const at = key === null ? undefined : p.seen.get(key);
     p.shownSeq = key === p.current() ? p.seq : Math.max(p.shownSeq, at === undefined ? 0 : at);
   };
-  p.current = () => keyOf(controls.map(([model, name]) => model.get(name)));
+  p.current = () => keyOf([...controls.map(([model, name]) => model.get(name)),
+                            ...p.views.map((v) => v.value)]);
+  // the views the kernel's frame shows become the page's (a slider may turn a view), except
+  // while the mouse turns one and for a second after (frames drawn on the way still come)
+  p.adopt = (state) => {
+    if (!state || p.turn || performance.now() < p.turnUntil) return;
+    p.views.forEach((v, k) => {
+      const value = state[controls.length + k];
+      if (Array.isArray(value)) v.value = value;
+    });
+  };
   p.kernelCanvas = () => {           // the kernel's last frame, whatever the page shows
     const {width, height} = canvas.offscreen_canvas;
     if (!p.copy) p.copy = document.createElement('canvas');
@@ -290,6 +304,7 @@ function pictures(canvas, controls) {
     p.kernelKey = msg.state ? keyOf(msg.state) : null;
     const now = !msg.state || p.newer(p.kernelKey);
     if (now) p.reached(p.kernelKey); else p.stale += 1;
+    if (now) p.adopt(msg.state);
     // (a frame the kernel sends is never the kept picture on the screen: for that one it
     // sends "same")
     return now;
@@ -344,6 +359,7 @@ function pictures(canvas, controls) {
         p.reached(key);
         paint(canvas, copy, key, false);
       }
+      if (p.newer(key)) p.adopt(msg.state);
     }).catch(() => {});
   };
   p.receive = (msg, buffers) => {
@@ -392,12 +408,49 @@ function pictures(canvas, controls) {
   // are forgotten, and new ones accepted once drawn after the kernel has seen the mouse go up
   const inside = (target) => Promise.all(Object.values(canvas.views || {}))
     .then((views) => views.some((view) => view && view.el && view.el.contains(target)));
+  // ... except a press on a 3D axes: a turn, which the views in the values describe. The page
+  // turns its copy of the view as the kernel will (course_lib._prefetch.turn_in_steps: the
+  // 'azel' style, 180 degrees per width or height of the axes, shown in whole degrees) and
+  // paints the picture kept for it, if any, while the mouse moves
+  const at = (event, el) => {
+    const r = el.getBoundingClientRect();
+    return [(event.clientX - r.left) / r.width, (event.clientY - r.top) / r.height];
+  };
+  const within = (box, [x, y]) => box[0] <= x && x <= box[2] && box[1] <= y && y <= box[3];
   document.addEventListener('mousedown', (event) => {
-    inside(event.target).then((yes) => {
-      if (yes) { p.pressed = true; p.forget(); }
+    const el = event.target;
+    inside(el).then((yes) => {
+      if (!yes) return;
+      const point = el.tagName === 'CANVAS' ? at(event, el) : null;
+      const k = point && event.button === 0 ? p.views.findIndex((v) => within(v.box, point))
+                                            : -1;
+      if (k >= 0) {
+        p.turn = {k, el, from: point, exact: [...p.views[k].value]};
+      } else {
+        p.pressed = true;
+        p.forget();
+      }
     }).catch(() => {});
   }, true);
+  document.addEventListener('mousemove', (event) => {
+    const turn = p.turn;
+    if (!turn || !(event.buttons & 1)) return;
+    const view = p.views[turn.k];
+    const point = at(event, turn.el);
+    if (!within(view.box, point)) return;      // the kernel's axes ignore it too
+    const [w, h] = [view.box[2] - view.box[0], view.box[3] - view.box[1]];
+    turn.exact[0] += ((point[1] - turn.from[1]) / h) * 180;
+    turn.exact[1] -= ((point[0] - turn.from[0]) / w) * 180;
+    turn.from = point;
+    const whole = turn.exact.map((v) => Math.floor(v + 0.5));
+    if (whole[0] !== view.value[0] || whole[1] !== view.value[1]) {
+      view.value = whole;
+      p.turned += 1;
+      p.show();
+    }
+  }, true);
   document.addEventListener('mouseup', () => {
+    if (p.turn) { p.turn = null; p.turnUntil = performance.now() + 1000; }
     if (p.pressed) { p.pressed = false; p.need = p.epoch + 1; }
   }, true);
   return p;
@@ -413,10 +466,11 @@ export default {
       if (canvas && typeof canvas.handle_binary === 'function') {
         patch(Object.getPrototypeOf(canvas));
         const specs = model.get('controls') || [];
-        if (specs.length) {
+        const views = model.get('views') || [];
+        if (specs.length || views.length) {
           const controls = await Promise.all(specs.map(
             ([id, name]) => manager.get_model(id).then((control) => [control, name])));
-          const kept = pictures(canvas, controls);
+          const kept = pictures(canvas, controls, views);
           kept.ids = specs.map(([id]) => id);
           canvas.__course = kept;
           // the browser tests and the benchmark read how often a kept picture was shown
@@ -469,7 +523,8 @@ def frame_decoder(canvas):
     True
     """
     prefetch = getattr(canvas, "_course_prefetch", None)
-    return _decoder_class()(canvas=canvas, controls=prefetch.spec() if prefetch else [])
+    return _decoder_class()(canvas=canvas, controls=prefetch.spec() if prefetch else [],
+                            views=prefetch.view_spec() if prefetch else [])
 
 
 _DECODER_CLASS = None
@@ -488,6 +543,8 @@ def _decoder_class():
             canvas = traitlets.Instance(Canvas).tag(sync=True, **widget_serialization)
             #: ``[[model id, trait]]`` of the explorer's controls (:mod:`course_lib._prefetch`)
             controls = traitlets.List().tag(sync=True)
+            #: each 3D axes' place and view (:meth:`course_lib._prefetch.Prefetcher.view_spec`)
+            views = traitlets.List().tag(sync=True)
 
             def __init__(self, **kwargs):
                 super().__init__(**kwargs)
@@ -509,7 +566,7 @@ def _decoder_class():
                     self.canvas._course_last = None
                     self.canvas._course_regions = True
                     prefetch = getattr(self.canvas, "_course_prefetch", None)
-                    if prefetch is not None and self.controls:
+                    if prefetch is not None and (self.controls or self.views):
                         prefetch.ready(self)
 
         _DECODER_CLASS = _FrameDecoder

@@ -22,11 +22,18 @@ A prefetched picture must be the picture the kernel would draw. :func:`render_at
 with every widget message and frame held back, then sets the values back and checks that the
 figure and every widget of the explorer are exactly as before; a control that fails that
 check (its picture depends on more than the controls, or setting it moves other controls) is
-put back by hand and not drawn ahead again. What the controls cannot show (a point dragged, a 3D view turned)
-clears the pictures on both sides: the page clears them when the mouse goes down on the
-figure and accepts new ones only once the kernel has seen the mouse go up; the kernel clears
-its list when it sees it, and whenever one of its frames differs from the picture it sent for
-the same values.
+put back by hand and not drawn ahead again.
+
+A 3D view turned by the mouse is one more control (:class:`View`): the kernel turns its axes
+in whole degrees (:func:`turn_in_steps`), so the views a turn passes through are few and can be
+drawn ahead like a slider's values, and the page turns its own copy of the view from the
+mouse's moves exactly as the kernel will, and paints the picture kept for it.
+
+What neither the controls nor the views show (a point dragged) clears the pictures on both
+sides: the page clears them when the mouse goes down on the figure outside a 3D axes and
+accepts new ones only once the kernel has seen the mouse go up; the kernel clears its list when
+it sees it, and whenever one of its frames differs from the picture it sent for the same
+values.
 """
 import contextlib
 import io
@@ -44,6 +51,8 @@ __all__ = ["Prefetcher", "attach", "controls", "render_at"]
 FOCUS_FRAMES = 64
 #: Pictures the kernel keeps track of (and the page keeps) before it stops prefetching.
 MAX_FRAMES = 300
+#: Pictures further along the control moved last drawn before the other controls' steps.
+AHEAD = 8
 #: Seconds of drawing spent on prefetching after each input, at most.
 BUDGET_S = 3.0
 #: Seconds the kernel must have been idle before it prefetches.
@@ -135,6 +144,8 @@ def candidates(control, name):
     """
     import ipywidgets as w
 
+    if isinstance(control, View):
+        return control.steps()
     if getattr(control, "disabled", False):
         return []
     if isinstance(control, (w.Checkbox, w.ToggleButton)):
@@ -202,6 +213,136 @@ def _on_grid(control, k):
     if isinstance(control, (w.IntSlider, w.IntRangeSlider)):
         return int(value)
     return float(round(value, 12))
+
+
+class View:
+    """A 3D axes' view as a control of its explorer: ``value`` is ``(elevation, azimuth)`` in
+    degrees, whole degrees once the student has turned it (:func:`turn_in_steps`). Setting it
+    turns the axes as the mouse does.
+
+    Examples
+    --------
+    >>> from course_lib.widgets.gimbal import GimbalExplorer
+    >>> ax = next(a for a in GimbalExplorer().fig.axes if a.name == "3d")
+    >>> view = View(ax)
+    >>> view.value = (10, 35)
+    >>> view.value, (ax.elev, ax.azim)
+    ((10.0, 35.0), (10, 35))
+    >>> candidates(view, "value")[:4]     # a step of the azimuth either way, of the elevation
+    [(10, 34), (10, 36), (9, 35), (11, 35)]
+    """
+
+    description = "3D view"
+
+    def __init__(self, ax):
+        self.ax = ax
+
+    @property
+    def value(self):
+        return (float(self.ax.elev), float(self.ax.azim))
+
+    @value.setter
+    def value(self, value):
+        ax = self.ax
+        ax.view_init(elev=value[0], azim=value[1], roll=ax.roll,
+                     vertical_axis=ax._axis_names[ax._vertical_axis])
+        ax.stale = True
+
+    def box(self):
+        """Where the axes lies on its canvas: ``[left, top, right, bottom]``, fractions of the
+        canvas with y pointing down, as the page measures the mouse."""
+        x0, y0, x1, y1 = self.ax.get_position().extents
+        return [float(x0), float(1 - y1), float(x1), float(1 - y0)]
+
+    def steps(self):
+        """The views a turn reaches next, nearest first: the azimuth one whole degree at a
+        time either way, the elevation every second step (a turn is mostly sideways)."""
+        elev, azim = (int(np.floor(v + 0.5)) for v in self.value)
+        out = []
+        for d in range(1, FOCUS_FRAMES + 1):
+            out += [(elev, azim - d), (elev, azim + d)]
+            if d % 2 == 1:
+                k = (d + 1) // 2
+                out += [(elev - k, azim), (elev + k, azim)]
+        return [v for v in out if _canon(v) != _canon(self.value)]
+
+
+def whole_degrees(value):
+    """A view angle rounded to whole degrees, halves up: ``floor(value + 0.5)``, the page's
+    ``Math.floor(value + 0.5)``."""
+    return int(np.floor(value + 0.5))
+
+
+def turn_in_steps(ax):
+    """Make the mouse turn 3D axes `ax` as ``'azel'`` does (a sideways drag turns the
+    azimuth, a drag up and down the elevation: what the page predicts), showing the view in
+    whole degrees: the views a turn passes through are then the few the kernel can draw
+    ahead. The angle itself is kept exact while the button is down, so a slow drag turns
+    too. Returns the callback connected in place of the axes' own.
+
+    Examples
+    --------
+    >>> from matplotlib.backend_bases import MouseEvent
+    >>> from course_lib.widgets.gimbal import GimbalExplorer
+    >>> fig = GimbalExplorer().fig
+    >>> ax = next(a for a in fig.axes if a.name == "3d")
+    >>> _ = turn_in_steps(ax)
+    >>> ax.view_init(elev=20, azim=30)
+    >>> fig.canvas.draw()
+    >>> x0, y = ax.bbox.x0 + 0.3 * ax.bbox.width, ax.bbox.y0 + ax.bbox.height / 2
+    >>> fig.canvas.callbacks.process("button_press_event",
+    ...                              MouseEvent("button_press_event", fig.canvas, x0, y, 1))
+    >>> for k in range(1, 4):                      # a tenth of the axes' width each
+    ...     fig.canvas.callbacks.process("motion_notify_event", MouseEvent(
+    ...         "motion_notify_event", fig.canvas, x0 + 0.1 * k * ax.bbox.width, y, 1))
+    ...     print(ax.elev, ax.azim)                # 18 degrees less each time
+    20 12
+    20 -6
+    20 -24
+    """
+    import matplotlib as mpl
+
+    canvas = ax.get_figure(root=True).canvas
+    registry = canvas.callbacks
+    for cid, ref in list(registry.callbacks.get("motion_notify_event", {}).items()):
+        if ref() == ax._on_move:
+            registry.disconnect(cid)
+    exact = {}
+
+    def pressed(event):
+        exact.clear()
+
+    def on_move(event):
+        turning = (ax.button_pressed in ax._rotate_btn and ax.get_navigate_mode() is None)
+        if turning and exact:
+            ax.elev, ax.azim = exact["view"]
+        with mpl.rc_context({"axes3d.mouserotationstyle": "azel"}):
+            ax._on_move(event)
+        if turning:
+            exact["view"] = (ax.elev, ax.azim)
+            ax.elev, ax.azim = whole_degrees(ax.elev), whole_degrees(ax.azim)
+
+    registry.connect("button_press_event", pressed)
+    registry.connect("motion_notify_event", on_move)
+    ax._course_turn = (pressed, on_move)          # the registry holds them weakly
+    return on_move
+
+
+def views(fig):
+    """The :class:`View` of every 3D axes of `fig` (the same objects on every call)."""
+    out = []
+    for ax in fig.axes:
+        if ax.name == "3d":
+            if getattr(ax, "_course_view", None) is None:
+                ax._course_view = View(ax)
+            out.append(ax._course_view)
+    return out
+
+
+def inputs(explorer):
+    """Everything of `explorer` the page can change: its :func:`controls` and the views of its
+    3D axes, ``[(control, trait name)]``."""
+    return controls(explorer.widget) + [(v, "value") for v in views(explorer.fig)]
 
 
 @contextlib.contextmanager
@@ -311,7 +452,7 @@ def render_at(explorer, settings):
     (4, True, False)
     """
     canvas = explorer.fig.canvas
-    every = controls(explorer.widget)
+    every = inputs(explorer)
     names = dict((id(c), n) for c, n in every)
     tree = [w for w in _tree(explorer.widget) if w is not canvas]
     blitter = explorer.blitter
@@ -319,7 +460,10 @@ def render_at(explorer, settings):
     before = _picture(canvas)
     states = _states(tree)
     saved = {c: getattr(c, n) for c, n in every}
-    widgets = {c: {k: c._trait_values.get(k) for k in c.keys} for c, _ in every}
+    widgets = {c: {k: c._trait_values.get(k) for k in c.keys} for c, _ in every
+               if not isinstance(c, View)}
+    # a view turned needs the whole figure drawn, as the mouse's turn does
+    turned = any(isinstance(c, View) for c in settings)
     restore = _snapshot(explorer)
     values = None
     by_hand = False
@@ -327,7 +471,7 @@ def render_at(explorer, settings):
         try:
             for control, value in settings.items():
                 setattr(control, names[id(control)], value)
-            if requests or (blitter is not None and blitter.background is None):
+            if requests or turned or (blitter is not None and blitter.background is None):
                 canvas.draw()
             pixels = _picture(canvas)
             values = [_plain(getattr(c, n)) for c, n in every]
@@ -341,7 +485,7 @@ def render_at(explorer, settings):
                 if getattr(control, names[id(control)]) != saved[control]:
                     setattr(control, names[id(control)], saved[control])
             restore()
-            if requests or (blitter is not None and blitter.background is None):
+            if requests or turned or (blitter is not None and blitter.background is None):
                 canvas.draw()
             if not np.array_equal(_picture(canvas), before) or _states(tree) != states:
                 # setting the controls back set others in turn (a preset chosen anew resets
@@ -413,6 +557,12 @@ class Prefetcher:
         self.explorer = weakref.ref(explorer)
         self.canvas = explorer.fig.canvas
         self.controls = controls(explorer.widget)
+        self.views = views(explorer.fig)
+        for view in self.views:
+            turn_in_steps(view.ax)
+        # what the page can change, in the order of values(): the controls, then the views
+        self.inputs = self.controls + [(v, "value") for v in self.views]
+        self.turning = None            # the view the mouse is turning, between press and release
         self.sent = {}                 # canonical values -> checksum of the picture sent
         self.epoch = 0                 # mouse releases on the figure seen by the kernel
         self.focus = None
@@ -432,8 +582,13 @@ class Prefetcher:
         """``[[model id, trait]]`` of every control, in the order of :meth:`values`."""
         return [[c.model_id, n] for c, n in self.controls]
 
+    def view_spec(self):
+        """Each 3D axes' place on the canvas and view, in the order of :meth:`values` (after
+        the controls): ``[{"box": [left, top, right, bottom], "view": [elev, azim]}]``."""
+        return [{"box": v.box(), "view": list(v.value)} for v in self.views]
+
     def values(self):
-        return [_plain(getattr(c, n)) for c, n in self.controls]
+        return [_plain(getattr(c, n)) for c, n in self.inputs]
 
     def key(self, values=None):
         return tuple(_canon(v) for v in (self.values() if values is None else values))
@@ -452,11 +607,40 @@ class Prefetcher:
         self.spent = 0.0
 
     def _mouse(self, widget, content, buffers):
-        if isinstance(content, dict) and content.get("type") == "button_release":
-            # a point dragged or a view turned: every picture drawn before is stale
-            self.epoch += 1
-            self.sent.clear()
+        if not isinstance(content, dict):
+            return
+        if content.get("type") == "button_press":
+            # on a 3D axes the press starts a turn, which the views in the pictures' values
+            # describe (the next views drawn ahead while the mouse rests); anywhere else it
+            # may move what no control shows (a point)
+            self.turning = self._view_at(content)
+            if self.turning is not None:
+                self.focus = self.turning
+                self.spent = 0.0
+        elif content.get("type") == "button_release":
+            if self.turning is not None:
+                self.focus, self.turning = self.turning, None
+            else:
+                # a point dragged: every picture drawn before is stale
+                self.epoch += 1
+                self.sent.clear()
             self.spent = 0.0
+
+    def _view_at(self, content):
+        """The view whose axes holds a mouse message's point (x, y: canvas pixels from the top
+        left), or None."""
+        try:
+            fx = float(content["x"]) / self.canvas.figure.bbox.width
+            fy = float(content["y"]) / self.canvas.figure.bbox.height
+        except (KeyError, TypeError, ValueError, ZeroDivisionError):
+            return None
+        if content.get("button", 0) != 0:
+            return None
+        for view in self.views:
+            left, top, right, bottom = view.box()
+            if left <= fx <= right and top <= fy <= bottom:
+                return view
+        return None
 
     def frame_drawn(self, pixels):
         """The kernel has drawn a frame of the current values: if the page was sent this very
@@ -489,7 +673,7 @@ class Prefetcher:
         first; `values` are those of every control in the page once the student has set
         `control` to `value` (the picture is kept under them: a choice that sets other
         controls in the kernel is found in the page before those reach it)."""
-        movable = [(c, n) for c, n in self.controls if id(c) not in self.skip]
+        movable = [(c, n) for c, n in self.inputs if id(c) not in self.skip]
         lists = {id(c): candidates(c, n) for c, n in movable}
         focus = self.focus
         if focus is None or not lists.get(id(focus)):
@@ -500,17 +684,21 @@ class Prefetcher:
             return 4 if isinstance(c.value, tuple) else 2
 
         order = []
+        moved = focus is not None and self.focus is not None
         if focus is not None:
-            order += [(focus, v) for v in lists[id(focus)][:near(focus)]]
+            # the control moved goes on moving most likely: a few steps further along it
+            # first (then the others' single steps, which each new value of it renews)
+            first = near(focus) + (AHEAD if moved else 0)
+            order += [(focus, v) for v in lists[id(focus)][:first]]
         for c, _ in movable:
             if c is not focus:
                 order += [(c, v) for v in lists[id(c)][:near(c)]]
-        if focus is not None and self.focus is not None:
+        if moved:
             # further out only once the student has moved a control: an explorer nobody
             # touches costs a step either side of each control
-            order += [(focus, v) for v in lists[id(focus)][near(focus):FOCUS_FRAMES]]
+            order += [(focus, v) for v in lists[id(focus)][first:FOCUS_FRAMES]]
         now = self.values()
-        index = {id(c): k for k, (c, _) in enumerate(self.controls)}
+        index = {id(c): k for k, (c, _) in enumerate(self.inputs)}
         out = []
         for control, value in order:
             values = list(now)

@@ -36,6 +36,32 @@ def _live(explorer, control, name, value):
     return frame
 
 
+def _turned(explorer, view, value):
+    """The frame drawn when the mouse turns `view` (a :class:`course_lib._prefetch.View`) to
+    `value`, as the browser's mouse messages do (press in the middle of the axes, one move,
+    release), and the view set back."""
+    from matplotlib.backend_bases import MouseEvent
+
+    ax, canvas = view.ax, explorer.fig.canvas
+    old = view.value
+    canvas.draw()
+    box = ax.bbox
+    x0, y0 = box.x0 + box.width / 2, box.y0 + box.height / 2
+    # 'azel': the azimuth turns back 180 degrees per width, the elevation per height
+    x1 = x0 - (value[1] - old[1]) / 180 * box.width
+    y1 = y0 - (value[0] - old[0]) / 180 * box.height
+    for name, x, y in (("button_press_event", x0, y0), ("motion_notify_event", x1, y1),
+                       ("button_release_event", x1, y1)):
+        canvas.callbacks.process(name, MouseEvent(name, canvas, x, y, 1))
+    assert view.value == tuple(map(float, value)), f"the mouse turned to {view.value}, " \
+        f"not {value}"
+    canvas.draw()
+    frame = np.asarray(canvas.get_renderer().buffer_rgba()).copy()
+    view.value = old
+    canvas.draw()
+    return frame
+
+
 def _states(explorer):
     canvas = explorer.fig.canvas
     return [x.get_state() for x in _prefetch._tree(explorer.widget) if x is not canvas]
@@ -56,7 +82,7 @@ def test_a_picture_drawn_ahead_is_the_frame_drawn_live_and_changes_nothing(cls, 
     canvas.draw()
     sent = []
     monkeypatch.setattr(w.Widget, "_send", lambda self, msg, buffers=None: sent.append(msg))
-    names = {id(c): n for c, n in prefetch.controls}
+    names = {id(c): n for c, n in prefetch.inputs}
     plan = prefetch.plan()
     if not plan:
         pytest.skip(f"{cls.__name__}: no control with values to draw ahead")
@@ -81,17 +107,21 @@ def test_a_picture_drawn_ahead_is_the_frame_drawn_live_and_changes_nothing(cls, 
         assert np.array_equal(np.asarray(canvas.get_renderer().buffer_rgba()), before), \
             "the figure is not as it was"
         assert _states(explorer) == states, "a widget is not as it was"
-        live = _live(explorer, control, names[id(control)], value)
+        live = (_turned(explorer, control, value) if isinstance(control, _prefetch.View)
+                else _live(explorer, control, names[id(control)], value))
         differ = int((np.abs(live.astype(int) - pixels).max(axis=-1) > 0).sum())
         assert differ == 0, (f"{cls.__name__}: {control.description or type(control).__name__}"
                              f" = {value!r}: {differ} pixels differ from the live frame")
-        assert len(drawn_at) == len(values) == len(prefetch.controls)
+        assert len(drawn_at) == len(values) == len(prefetch.inputs)
     for control, value, why in refused:
         # refused only where the explorer itself does not come back: the live path, set and
         # set back, leaves a widget or the figure changed too
         states, before = _states(explorer), np.asarray(
             canvas.get_renderer().buffer_rgba()).copy()
-        _live(explorer, control, names[id(control)], value)
+        if isinstance(control, _prefetch.View):
+            _turned(explorer, control, value)
+        else:
+            _live(explorer, control, names[id(control)], value)
         after = np.asarray(canvas.get_renderer().buffer_rgba())
         assert _states(explorer) != states or not np.array_equal(after, before), \
             f"{cls.__name__}: {control.description!r} = {value!r} refused ({why}), " \

@@ -311,7 +311,23 @@ class PageKernel:
         self.client = BlockingKernelClient(connection_file=str(connection))
         self.client.load_connection_file()
         self.client.start_channels()
+        self._only_own_output()
         self.client.wait_for_ready(timeout=timeout)
+
+    def _only_own_output(self):
+        """Receive no widget messages: the kernel broadcasts every frame and every picture
+        drawn ahead (course_lib/_prefetch.py) to every client, tens of megabytes after a
+        lesson is driven. A client that reads them slower than they come fills ZeroMQ's
+        queue for it (1,000 messages), and the kernel then drops what comes next for it, the
+        output of this client's own call among them ("Timeout waiting for output", the
+        kernel idle). Comm messages go out under the topic ``comm-<id>``; status, errors and
+        results under ``kernel.<id>.``, printed text under ``stream.``."""
+        import zmq
+
+        socket = self.client.iopub_channel.socket
+        socket.setsockopt(zmq.UNSUBSCRIBE, b"")
+        for topic in (b"kernel.", b"stream.", b"execute_result", b"display_data", b"error"):
+            socket.setsockopt(zmq.SUBSCRIBE, topic)
 
     def run(self, code):
         """Execute `code` in the page's kernel; return what it printed (raise on an error)."""

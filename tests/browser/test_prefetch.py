@@ -175,5 +175,80 @@ def _t_index(kernel):
 
 
 def _cell_of(kernel, name):
-    return int(kernel.run("print(next(n for n, v in Out.items() if type(v).__name__ == %r))"
+    # the latest: another test of this browser session may have run the lesson in the same
+    # kernel before (its explorers are still in Out, as the mouse and keys left them)
+    return int(kernel.run("print(max(n for n, v in Out.items() if type(v).__name__ == %r))"
                           % name).strip())
+
+
+# The page's copy of the first 3D view of the explorer whose first control has model id `id`
+_VIEW = "(id) => { const p = (%s)(id); return {value: p.views[0].value, box: p.views[0].box, " \
+        "turned: p.turned, shown: p.shown, entries: p.entries.size, turning: !!p.turn, " \
+        "current: p.current(), kernel: p.kernelKey}; }" % _KEPT
+
+
+@pytest.fixture(scope="module")
+def gimbal(lab, browser):
+    lesson = "notebooks/ch03_transformations.ipynb"
+    notebook = NotebookPage(browser, lab, lesson).open().run_all()
+    kernel = PageKernel(lab, lesson)
+    try:
+        explorers = page_explorers(notebook, kernel)
+        k = [e["class"] for e in explorers].index("GimbalExplorer")
+        assert explorers[k]["kept"], "the gimbal explorer draws no pictures ahead"
+        yield notebook, kernel, widget_view(notebook, k), explorers[k]["kept"][0]
+    finally:
+        kernel.close()
+        notebook.close()
+
+
+def _kernel_view(kernel):
+    return kernel.json("import json; ax = next(a for a in Out[%d].fig.axes if a.name == '3d');"
+                       " print(json.dumps([float(ax.elev), float(ax.azim)]))"
+                       % _cell_of(kernel, "GimbalExplorer"))
+
+
+def test_a_3d_view_turned_by_the_mouse_is_answered_by_kept_pictures_and_the_kernel_agrees(
+        gimbal):
+    notebook, kernel, view, ident = gimbal
+    page = notebook.page
+    _wait(page, ident, lambda s: s["entries"] >= 4)
+    start = page.evaluate(_VIEW, ident)
+    assert start["value"] == _kernel_view(kernel), (start, _kernel_view(kernel))
+    canvas = figure_canvas(view)
+    box = canvas.bounding_box()
+    left, top, right, bottom = start["box"]
+    # the middle of the 3D axes; one degree of azimuth is 1/180 of its width
+    x = box["x"] + (left + right) / 2 * box["width"]
+    y = box["y"] + (top + bottom) / 2 * box["height"]
+    degree = (right - left) * box["width"] / 180
+    page.mouse.move(x, y)
+    page.mouse.down()
+    # while the button is held and the mouse rests, the kernel draws the next views ahead
+    _wait(page, ident, lambda s: s["entries"] >= 16)
+    elev, azim = start["value"]
+    for k, turn in enumerate((1.2, 3.3, -2.2)):       # degrees to the right (azimuth falls)
+        before = page.evaluate(_VIEW, ident)
+        x += turn * degree
+        page.mouse.move(x, y)
+        after = page.evaluate(_VIEW, ident)
+        azim -= turn
+        # the page turned its copy, in whole degrees (the browser moves the mouse by whole
+        # pixels: within a degree of the turn asked for)...
+        assert after["value"][0] == elev and abs(after["value"][1] - azim) <= 1, (k, after)
+        assert after["turned"] == before["turned"] + 1
+        # ... and painted the kept picture (in the move's own handler if it was decoded, a
+        # decoding later if not)
+        painted = _wait(page, ident, lambda s: s["shown"] > before["shown"], timeout=2)
+        assert painted["shown"] == before["shown"] + 1, (k, before, painted)
+        time.sleep(0.6)                                 # the kernel draws ahead again
+        # the kernel turned its axes to the very view the page computed
+        assert _kernel_view(kernel) == after["value"], (k, after)
+    page.mouse.up()
+    steady = _steady(page, ident)
+    # the kernel's frame is the picture kept for the view both sides reached
+    assert _kernel_view(kernel) == page.evaluate(_VIEW, ident)["value"]
+    assert steady["kernel"] == steady["current"], steady
+    got = page.evaluate(_COMPARE, ident)
+    assert got["sameValues"] and got["kept"] == 0 and got["shown"] == 0, got
+    assert notebook.console_errors == []
