@@ -66,4 +66,5 @@ def test_a_drag_keeps_up_at_30_fps_or_with_a_frame_for_every_change():
     # a slider of few values: four changes a second, each shown
     assert bench.fluent({"fps": 4, "changes_per_s": 4})
     assert not bench.fluent({"fps": 2, "changes_per_s": 4})
+    assert not bench.fluent({"fps": 0, "changes_per_s": 0})      # the drag changed nothing
     assert not bench.meets({"median_ms": 31, "fps": 60, "changes_per_s": 60})
