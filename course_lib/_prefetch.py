@@ -617,6 +617,7 @@ class Prefetcher:
             if self.turning is not None:
                 self.focus = self.turning
                 self.spent = 0.0
+                self.wake()                # no frame follows a press: nothing else wakes it
         elif content.get("type") == "button_release":
             if self.turning is not None:
                 self.focus, self.turning = self.turning, None

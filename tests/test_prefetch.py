@@ -239,6 +239,38 @@ def test_the_mouse_let_go_on_the_figure_makes_every_picture_sent_stale():
     assert prefetch.decoder.messages[-1][0]["epoch"] == 1
 
 
+def test_a_press_on_a_3d_axes_starts_a_turn_drawn_ahead_and_keeps_the_pictures(monkeypatch):
+    from course_lib.widgets.gimbal import GimbalExplorer
+
+    explorer = GimbalExplorer()
+    prefetch = _prefetch.attach(explorer)
+    canvas = explorer.fig.canvas
+    canvas.draw()
+    prefetch.decoder = _Decoder()
+    woken = []
+    monkeypatch.setattr(prefetch, "wake", lambda delay=0: woken.append(delay))
+    prefetch.step()
+    assert prefetch.sent
+    (view,) = prefetch.views
+    width, height = explorer.fig.bbox.width, explorer.fig.bbox.height
+    left, top, right, bottom = view.box()
+    # the page's message: canvas pixels from the top left, button 0 the left one
+    press = {"type": "button_press", "button": 0,
+             "x": (left + right) / 2 * width, "y": (top + bottom) / 2 * height}
+    woken.clear()
+    prefetch._mouse(canvas, press, [])
+    # the view is what the student moves now; no frame follows a press, so it wakes itself
+    assert prefetch.turning is view and prefetch.focus is view and woken
+    assert [c for c, _, _ in prefetch.plan()[:12]] == [view] * 12
+    prefetch._mouse(canvas, {"type": "button_release"}, [])
+    # a turn leaves every picture valid: the views are among their values
+    assert prefetch.sent and prefetch.epoch == 0 and prefetch.turning is None
+    # a press beside the axes (in the figure's margin) may move what no control shows
+    prefetch._mouse(canvas, {**press, "x": 0.5 * left * width}, [])
+    prefetch._mouse(canvas, {"type": "button_release"}, [])
+    assert not prefetch.sent and prefetch.epoch == 1
+
+
 def test_a_kernel_frame_carries_the_values_it_shows_once_a_page_keeps_pictures():
     explorer, prefetch = _bezier()
     canvas = explorer.fig.canvas

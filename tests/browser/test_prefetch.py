@@ -202,6 +202,33 @@ def gimbal(lab, browser):
         notebook.close()
 
 
+# Whether the page holds the pictures of the 3D view `turns` whole degrees of azimuth either side
+# of its present one (the other values as they are)
+_HOLDS_TURNS = r"""([id, turns]) => {
+  const p = (%s)(id);
+  const now = JSON.parse(p.current());
+  const view = now.length - 1;
+  const [elev, azim] = now[view];
+  for (let d = -turns; d <= turns; d++) {
+    if (d === 0) continue;
+    const key = JSON.stringify([...now.slice(0, view), [elev, azim + d]]);
+    if (!p.entries.has(key)) return false;
+  }
+  return true;
+}""" % _KEPT
+
+
+def _holds_turns(page, ident, turns, timeout=60.0):
+    """Until the kernel has drawn (and the page keeps) the views `turns` degrees either side."""
+    deadline = time.monotonic() + timeout
+    while not page.evaluate(_HOLDS_TURNS, [ident, turns]):
+        assert time.monotonic() < deadline, (
+            f"the views {turns} degrees either side never came",
+            page.evaluate("(id) => { const p = (%s)(id); return [p.current(), "
+                          "[...p.entries.keys()].slice(-8)]; }" % _KEPT, ident))
+        time.sleep(0.1)
+
+
 def _kernel_view(kernel):
     return kernel.json("import json; ax = next(a for a in Out[%d].fig.axes if a.name == '3d');"
                        " print(json.dumps([float(ax.elev), float(ax.azim)]))"
@@ -224,10 +251,11 @@ def test_a_3d_view_turned_by_the_mouse_is_answered_by_kept_pictures_and_the_kern
     degree = (right - left) * box["width"] / 180
     page.mouse.move(x, y)
     page.mouse.down()
-    # while the button is held and the mouse rests, the kernel draws the next views ahead
-    _wait(page, ident, lambda s: s["entries"] >= 16)
     elev, azim = start["value"]
     for k, turn in enumerate((1.2, 3.3, -2.2)):       # degrees to the right (azimuth falls)
+        # while the button is held and the mouse rests, the kernel draws the next views ahead
+        # (on a loaded machine a view can take 0.1 s): the turn below reaches one of them
+        _holds_turns(page, ident, 5)
         before = page.evaluate(_VIEW, ident)
         x += turn * degree
         page.mouse.move(x, y)
@@ -241,8 +269,10 @@ def test_a_3d_view_turned_by_the_mouse_is_answered_by_kept_pictures_and_the_kern
         # decoding later if not)
         painted = _wait(page, ident, lambda s: s["shown"] > before["shown"], timeout=2)
         assert painted["shown"] == before["shown"] + 1, (k, before, painted)
-        time.sleep(0.6)                                 # the kernel draws ahead again
         # the kernel turned its axes to the very view the page computed
+        deadline = time.monotonic() + 30
+        while _kernel_view(kernel) != after["value"] and time.monotonic() < deadline:
+            time.sleep(0.2)
         assert _kernel_view(kernel) == after["value"], (k, after)
     page.mouse.up()
     steady = _steady(page, ident)
