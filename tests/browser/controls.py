@@ -344,7 +344,7 @@ def drive(view, gestures, min_pixels, expected=None):
         if changed < min_pixels and how != "none" and not (how == "text" and text_changed):
             problems.append(line)
 
-    operated, chosen = set(), set()
+    operated, chosen, waited = set(), set(), {}
     park_mouse(view.page)
     wait_until_steady(view)
     while True:
@@ -352,6 +352,13 @@ def drive(view, gestures, min_pixels, expected=None):
         todo = [c for c in current if c["kind"] not in CHOOSERS and c["key"] not in operated]
         if todo:
             control = min(todo, key=destructive)
+            if element(view, control["index"]).is_disabled() and \
+                    waited.get(control["key"], 0) < 25:
+                # greyed out since the list was read (a step button at the first step once the
+                # kernel's last answer came): read the list again, as a student looks again
+                waited[control["key"]] = waited.get(control["key"], 0) + 1
+                time.sleep(0.2)
+                continue
             operated.add(control["key"])
             before = snapshot(view)
             action, undo = operate(view, control)
