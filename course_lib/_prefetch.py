@@ -257,7 +257,7 @@ class View:
     def steps(self):
         """The views a turn reaches next, nearest first: the azimuth one whole degree at a
         time either way, the elevation every second step (a turn is mostly sideways)."""
-        elev, azim = (int(np.floor(v + 0.5)) for v in self.value)
+        elev, azim = (whole_degrees(v) for v in self.value)
         out = []
         for d in range(1, FOCUS_FRAMES + 1):
             out += [(elev, azim - d), (elev, azim + d)]

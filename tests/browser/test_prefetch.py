@@ -48,18 +48,24 @@ def _wait(page, ident, test, timeout=30.0):
         time.sleep(0.1)
 
 
-@pytest.fixture(scope="module")
-def bezier(lab, browser):
-    notebook = NotebookPage(browser, lab, LESSON).open().run_all()
-    kernel = PageKernel(lab, LESSON)
+def _opened(lab, browser, lesson, name):
+    """The lesson run in the page, its kernel, and the widget view and first kept control's
+    model id of its explorer of class `name` (which must draw pictures ahead)."""
+    notebook = NotebookPage(browser, lab, lesson).open().run_all()
+    kernel = PageKernel(lab, lesson)
     try:
         explorers = page_explorers(notebook, kernel)
-        k = [e["class"] for e in explorers].index("BezierExplorer")
-        assert explorers[k]["kept"], "the Bézier explorer draws no pictures ahead"
+        k = [e["class"] for e in explorers].index(name)
+        assert explorers[k]["kept"], f"{name} draws no pictures ahead"
         yield notebook, kernel, widget_view(notebook, k), explorers[k]["kept"][0]
     finally:
         kernel.close()
         notebook.close()
+
+
+@pytest.fixture(scope="module")
+def bezier(lab, browser):
+    yield from _opened(lab, browser, LESSON, "BezierExplorer")
 
 
 def _steady(page, ident):
@@ -189,17 +195,7 @@ _VIEW = "(id) => { const p = (%s)(id); return {value: p.views[0].value, box: p.v
 
 @pytest.fixture(scope="module")
 def gimbal(lab, browser):
-    lesson = "notebooks/ch03_transformations.ipynb"
-    notebook = NotebookPage(browser, lab, lesson).open().run_all()
-    kernel = PageKernel(lab, lesson)
-    try:
-        explorers = page_explorers(notebook, kernel)
-        k = [e["class"] for e in explorers].index("GimbalExplorer")
-        assert explorers[k]["kept"], "the gimbal explorer draws no pictures ahead"
-        yield notebook, kernel, widget_view(notebook, k), explorers[k]["kept"][0]
-    finally:
-        kernel.close()
-        notebook.close()
+    yield from _opened(lab, browser, "notebooks/ch03_transformations.ipynb", "GimbalExplorer")
 
 
 # Whether the page holds the pictures of the 3D view `turns` whole degrees of azimuth either side
