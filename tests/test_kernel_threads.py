@@ -136,6 +136,46 @@ def test_messages_of_other_kinds_or_other_widgets_are_never_merged():
     assert not _supersedes(mouse("a", "button_release"), mouse("a", "motion_notify"))
 
 
+def test_a_message_that_reaches_the_main_thread_directly_waits_behind_older_ones():
+    """ipykernel sends a comm's first message (a button's first click) to the main thread
+    directly; a slider's values sent just before it on a subshell may still be waiting there.
+    The click must be handled after them, as the student acted, not on the stale value."""
+    import threading
+
+    from course_lib.widgets import _base
+
+    handled, callbacks = [], []
+
+    class Loop:                                    # the kernel's event loop, run by hand
+        def add_callback(self, callback):
+            callbacks.append(callback)
+
+    def message(comm, data):
+        return {"header": {"msg_id": f"{comm}-{len(handled)}-{data}"},
+                "content": {"comm_id": comm, "data": data}}
+
+    forward = _base._on_main_thread(lambda stream, ident, msg: handled.append(
+        msg["content"]["data"]), Loop(), threading.main_thread())
+    try:
+        slider = {"method": "update", "state": {"value": 0}, "buffer_paths": []}
+        on_subshell = threading.Thread(target=forward, args=(None, [], message("s", slider)))
+        on_subshell.start()
+        on_subshell.join()
+        assert handled == [] and _base.comms_waiting()
+        click = {"method": "custom", "content": {"event": "click"}}
+        forward(None, [], message("b", click))        # the button's first message, on main
+        assert handled == [], "the click was handled before the slider's value waiting"
+        assert forward.deferred == 1
+        while callbacks:
+            callbacks.pop(0)()
+        assert handled == [slider, click]
+        assert not _base.comms_waiting()
+        forward(None, [], message("b", click))        # nothing waits: handled at once
+        assert handled == [slider, click, click] and callbacks == []
+    finally:
+        _base._FORWARDERS.remove(forward)
+
+
 def test_a_vtk_explorer_moved_from_a_subshell_renders_its_picture(kernel):
     """The surface explorer (pyvista/VTK, an OpenGL context made on the main thread): its lift
     slider moved on a subshell must give a real picture of the patch, not a black frame."""

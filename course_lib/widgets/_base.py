@@ -96,9 +96,12 @@ def _on_main_thread(handler, loop, main):
     positions: a message that merely repeats the one waiting last in the queue with newer
     values (:func:`_supersedes`) takes its place, so the main thread renders the latest input
     instead of every stale one in turn (the front end does not wait for it: the subshell has
-    already answered). The wrapper counts the messages it handed over in ``forwarded`` (the
-    browser tests read it to prove that JupyterLab really sent messages to a subshell) and the
-    ones merged into a newer one in ``merged``. Setting its ``trace`` to a callable
+    already answered). A message that reaches the main thread directly (ipykernel sends a
+    comm's first message there) while others still wait is queued behind them, so that the
+    order the student acted in is kept. The wrapper counts the messages it handed over in
+    ``forwarded`` (the browser tests read it to prove that JupyterLab really sent messages to a
+    subshell), the ones merged into a newer one in ``merged`` and the direct ones queued in
+    ``deferred``. Setting its ``trace`` to a callable
     ``trace(event, msg_id)`` reports "arrive", "start" and "end" of every forwarded message
     (the browser benchmark times a frame's path with it)."""
     waiting = []                       # [context, stream, ident, msg], oldest first
@@ -119,7 +122,17 @@ def _on_main_thread(handler, loop, main):
     @functools.wraps(handler)
     def forward(stream, ident, msg):
         if threading.current_thread() is main:
-            return handler(stream, ident, msg)
+            # ipykernel sends a comm's first message (a button's first click) to the main
+            # thread directly: while older messages of other widgets still wait (a slider
+            # dragged just before), it waits behind them, or the click would act on a value
+            # the slider is about to leave (and the slider's older value would win)
+            if not comms_waiting():
+                return handler(stream, ident, msg)
+            forward.deferred += 1
+            with lock:
+                waiting.append([contextvars.copy_context(), stream, ident, msg])
+            loop.add_callback(handle_oldest)
+            return None
         forward.forwarded += 1
         if forward.trace is not None:
             forward.trace("arrive", msg["header"]["msg_id"])
@@ -136,6 +149,7 @@ def _on_main_thread(handler, loop, main):
     forward._on_main_thread = True
     forward.forwarded = 0
     forward.merged = 0
+    forward.deferred = 0
     forward.trace = None
     forward.waiting = waiting
     _FORWARDERS.append(forward)
