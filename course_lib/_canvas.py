@@ -422,8 +422,11 @@ function pictures(canvas, controls, views) {
     inside(el).then((yes) => {
       if (!yes) return;
       const point = el.tagName === 'CANVAS' ? at(event, el) : null;
-      const k = point && event.button === 0 ? p.views.findIndex((v) => within(v.box, point))
-                                            : -1;
+      // with the toolbar's pan or zoom chosen the mouse turns no view (as in the kernel)
+      const toolbar = canvas.get('toolbar');
+      const navigating = !!(toolbar && toolbar.get && toolbar.get('_current_action'));
+      const k = point && event.button === 0 && !navigating
+        ? p.views.findIndex((v) => within(v.box, point)) : -1;
       if (k >= 0) {
         p.turn = {k, el, from: point, exact: [...p.views[k].value]};
       } else {

@@ -638,6 +638,8 @@ class Prefetcher:
         if content.get("button", 0) != 0:
             return None
         for view in self.views:
+            if view.ax.get_navigate_mode() is not None:
+                return None                # the toolbar's pan or zoom: the mouse moves no view
             left, top, right, bottom = view.box()
             if left <= fx <= right and top <= fy <= bottom:
                 return view

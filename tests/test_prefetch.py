@@ -269,6 +269,14 @@ def test_a_press_on_a_3d_axes_starts_a_turn_drawn_ahead_and_keeps_the_pictures(m
     prefetch._mouse(canvas, {**press, "x": 0.5 * left * width}, [])
     prefetch._mouse(canvas, {"type": "button_release"}, [])
     assert not prefetch.sent and prefetch.epoch == 1
+    # with the toolbar's pan chosen a press on the axes pans: not a turn, and the pictures
+    # drawn before (of the view unpanned) are stale
+    prefetch.sent[("stale",)] = 0
+    view.ax.set_navigate_mode("PAN")
+    prefetch._mouse(canvas, press, [])
+    assert prefetch.turning is None
+    prefetch._mouse(canvas, {"type": "button_release"}, [])
+    assert not prefetch.sent and prefetch.epoch == 2
 
 
 def test_a_kernel_frame_carries_the_values_it_shows_once_a_page_keeps_pictures():

@@ -278,3 +278,45 @@ def test_a_3d_view_turned_by_the_mouse_is_answered_by_kept_pictures_and_the_kern
     got = page.evaluate(_COMPARE, ident)
     assert got["sameValues"] and got["kept"] == 0 and got["shown"] == 0, got
     assert notebook.console_errors == []
+
+
+def test_with_the_toolbars_pan_chosen_a_drag_on_the_3d_axes_predicts_no_turn(gimbal):
+    """The toolbar's pan (or zoom) makes a drag on the axes pan it: the kernel turns nothing,
+    so the page must neither turn its copy of the view nor paint a kept view for the drag."""
+    notebook, kernel, view, ident = gimbal
+    page = notebook.page
+    _steady(page, ident)
+    before = page.evaluate(_VIEW, ident)
+    start = _kernel_view(kernel)
+    canvas = figure_canvas(view)
+    box = canvas.bounding_box()
+    left, top, right, bottom = before["box"]
+    x = box["x"] + (left + right) / 2 * box["width"]
+    y = box["y"] + (top + bottom) / 2 * box["height"]
+    page.mouse.move(x, y)                             # the toolbar fades in over the figure
+    pan = view.locator("button[title^='Left button pans']").first
+    pan.click()
+    cell = _cell_of(kernel, "GimbalExplorer")
+    mode = "print(next(a for a in Out[%d].fig.axes if a.name == '3d').get_navigate_mode())" \
+        % cell
+    deadline = time.monotonic() + 30
+    while kernel.run(mode).strip() != "PAN" and time.monotonic() < deadline:
+        time.sleep(0.2)
+    try:
+        assert kernel.run(mode).strip() == "PAN"
+        page.mouse.move(x, y)
+        page.mouse.down()
+        for k in range(1, 11):                        # 20 degrees' worth of a turn
+            page.mouse.move(x + k * 2 * (right - left) * box["width"] / 180, y)
+            time.sleep(0.03)
+        during = page.evaluate(_VIEW, ident)
+        page.mouse.up()
+        assert not during["turning"] and during["turned"] == before["turned"], during
+        assert during["value"] == before["value"], during
+        assert _kernel_view(kernel) == start
+    finally:
+        page.mouse.move(x, y)
+        pan.click()
+        while kernel.run(mode).strip() != "None" and time.monotonic() < deadline + 30:
+            time.sleep(0.2)
+    assert notebook.console_errors == []
