@@ -407,6 +407,9 @@ def measure_explorer(bench, k, view, explorer, samples, seconds):
     for gesture in explorer["gestures"]:
         if gesture["kind"] == "click":
             continue
+        # the whole figure in sight: a point lying outside the window gets no mouse (the
+        # slider rows above may have scrolled a tall figure's top or bottom out of it)
+        canvas.evaluate("(el) => el.scrollIntoView({block: 'center'})")
         box = canvas.bounding_box()
         at = lambda fx, fy: (box["x"] + fx * box["width"], box["y"] + fy * box["height"])
         (sx, sy), (ex, ey) = at(*gesture["start"]), at(*gesture["end"])
