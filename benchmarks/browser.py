@@ -394,7 +394,10 @@ def measure_explorer(bench, k, view, explorer, samples, seconds):
         box = handle.bounding_box()
         x0, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
         span = 0.3 * track["width"]
-        direction = 1 if high - now >= now - low else -1
+        # towards the farther end, as the handle lies now (its aria-valuenow can lag behind
+        # the key presses above: a 3-value slider at its top read "middle" and was dragged
+        # past its end, changing nothing)
+        direction = 1 if x0 <= track["x"] + track["width"] / 2 else -1
 
         def along(f):                     # out and back twice
             phase = (2 * f) % 1.0
