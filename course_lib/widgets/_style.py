@@ -144,6 +144,22 @@ def legend(ax, **options):
     return ax.legend(**options)
 
 
+def clear_title(bar):
+    """Keep a vertical pyvista/VTK scalar bar's title clear of its top label (VTK draws the
+    two touching); `bar` is the ``vtkScalarBarActor``. Returns it.
+
+    Examples
+    --------
+    >>> import vtk
+    >>> clear_title(vtk.vtkScalarBarActor()).GetVerticalTitleSeparation() > 0
+    True
+    """
+    from .. import draw
+
+    bar.SetVerticalTitleSeparation(round(8 * draw.lecture_scale()))
+    return bar
+
+
 def scalar_bar(title, **options):
     """Arguments for a pyvista scalar bar (``add_mesh(..., scalar_bar_args=...)``): a thin
     vertical bar along the right edge of the picture, its text in the shared picture sizes

@@ -132,6 +132,7 @@ class SimplificationExplorer(PlotterExplorer):
                               clim=(0, 0.5 * s["max_error"]), show_edges=True, edge_color="#303030",
                               line_width=0.5,
                               scalar_bar_args=_style.scalar_bar("error"))
+        _style.clear_title(self.plotter.scalar_bars["error"])
         self.candidates = pv.PolyData(s["segments"].reshape(-1, 3),
                                       lines=_lines(len(s["segments"])))
         self.plotter.add_mesh(self.candidates, color="#d0021b", line_width=5)

@@ -149,8 +149,11 @@ class SimplificationComparisonExplorer(PlotterExplorer):
             scene(State(faces=n))
         s = scene(self.state)
         scale = draw.lecture_scale()
-        self.plotter = pv.Plotter(off_screen=True, shape=(1, 3), border=False,
-                                  window_size=(round(720 * scale), round(260 * scale)))
+        # three meshes and, in a narrow fourth column of its own, the colour bar: laid over
+        # the third mesh its labels were unreadable on the dark faces
+        self.plotter = pv.Plotter(off_screen=True, shape=(1, 4), border=False,
+                                  col_weights=[9, 9, 9, 3],
+                                  window_size=(round(820 * scale), round(260 * scale)))
         self.plotter.set_background("white")
         self.polys = {}
         for i, m in enumerate(METHODS):
@@ -159,17 +162,20 @@ class SimplificationComparisonExplorer(PlotterExplorer):
             poly = pv.PolyData(r["vertices"], pyvista_faces(r["faces"]))
             poly.cell_data["error"] = r["face_error"]
             self.polys[m] = poly
-            self.plotter.add_mesh(poly, scalars="error", cmap="viridis", clim=(0, s["clim"]),
-                                  show_edges=True, edge_color="#303030", line_width=0.5,
-                                  show_scalar_bar=(i == 2),
-                                  scalar_bar_args=_style.scalar_bar("distance"))
+            actor = self.plotter.add_mesh(poly, scalars="error", cmap="viridis",
+                                          clim=(0, s["clim"]), show_edges=True,
+                                          edge_color="#303030", line_width=0.5,
+                                          show_scalar_bar=False)
             self.plotter.add_text(m, font_size=9, color="black")
             self.plotter.camera_position = [(3.2, -2.2, 1.8), (0, 0, 0), (0, 0, 1)]
+        self.plotter.subplot(0, 3)
+        _style.clear_title(self.plotter.add_scalar_bar(mapper=actor.mapper, **_style.scalar_bar(
+            "distance", position_x=0.3, position_y=0.08, width=0.16, height=0.72)))
         screen = self.screen()
         self.faces = labelled(w.SelectionSlider, "faces", options=list(LEVELS),
                               value=self.state.faces, continuous_update=True)
         bind(self.state, {"faces": self.faces}, self.update)
-        self.info = panel(width="720px")
+        self.info = panel(width="820px")
         self.widget = w.VBox([screen, beside(self.faces, self.info, align="flex-start")])
         self._draw(s)
 
