@@ -208,6 +208,8 @@ def _initialized(content):
 _DECODER_ESM = r"""
 // pictures decoded at most at once per explorer (each a few hundred kB), and kept in all
 const KEEP_DECODED = 16, KEEP = 400;
+// kept pictures decoded ahead of a control moving: its next values the same step further on
+const DECODE_AHEAD = 4;
 const canon = (v) => (typeof v === 'number' ? Number(v.toPrecision(10))
                       : Array.isArray(v) ? v.map(canon) : v);
 const keyOf = (values) => JSON.stringify(values.map(canon));
@@ -279,8 +281,33 @@ function pictures(canvas, controls, views) {
     const at = key === null ? undefined : p.seen.get(key);
     p.shownSeq = key === p.current() ? p.seq : Math.max(p.shownSeq, at === undefined ? 0 : at);
   };
-  p.current = () => keyOf([...controls.map(([model, name]) => model.get(name)),
-                            ...p.views.map((v) => v.value)]);
+  p.values = () => [...controls.map(([model, name]) => model.get(name)),
+                    ...p.views.map((v) => v.value)];
+  p.current = () => keyOf(p.values());
+  // a control moving (a slider dragged, a view turned) goes on the same way most likely:
+  // its next values' pictures are decoded now, so that they are painted at once when reached
+  // (a decoding takes 5-15 ms; begun only when reached, the page has often moved on by then)
+  p.last = null;
+  p.ahead = (now) => {
+    const last = p.last;
+    p.last = now;
+    if (!last || last.length !== now.length) return;
+    const moved = now.map((v, i) => i).filter((i) => keyOf([now[i]]) !== keyOf([last[i]]));
+    if (moved.length !== 1) return;
+    const i = moved[0], a = last[i], b = now[i];
+    const numbers = (v) => Array.isArray(v) ? v.every((x) => typeof x === 'number')
+                                            : typeof v === 'number';
+    if (!numbers(a) || !numbers(b) || Array.isArray(a) !== Array.isArray(b)) return;
+    const further = (k) => Array.isArray(b) ? b.map((x, j) => x + k * (x - a[j]))
+                                            : b + k * (b - a);
+    for (let k = 1; k <= DECODE_AHEAD; k++) {
+      const values = [...now];
+      values[i] = further(k);
+      const key = keyOf(values);
+      const entry = p.entries.get(key);
+      if (entry && !entry.bitmap) p.decode(key, entry);
+    }
+  };
   // the views the kernel's frame shows become the page's (a slider may turn a view), except
   // while the mouse turns one and for a second after (frames drawn on the way still come)
   p.adopt = (state) => {
@@ -377,7 +404,8 @@ function pictures(canvas, controls, views) {
     if (p.decoded.length < KEEP_DECODED) p.decode(key, entry);   // the nearest come first
   };
   p.show = () => {                   // a control changed in the page
-    const key = p.current();
+    const values = p.values();
+    const key = keyOf(values);
     p.seq += 1;
     p.seen.delete(key);
     p.seen.set(key, p.seq);
@@ -403,6 +431,7 @@ function pictures(canvas, controls, views) {
     } else {
       p.missed += 1;
     }
+    p.ahead(values);
   };
   // the mouse on the figure may change what no control shows (a point, a view): the pictures
   // are forgotten, and new ones accepted once drawn after the kernel has seen the mouse go up

@@ -142,6 +142,51 @@ def test_frames_the_page_has_moved_past_are_not_painted(bezier):
           f"{stats['stale'] - before['stale']}")
 
 
+# Of the kept pictures `steps` steps of t (step 0.01) beyond the page's values, which are held
+# and which decoded
+_AHEAD = r"""([id, t, steps]) => {
+  const p = (%s)(id);
+  const now = JSON.parse(p.current());
+  return steps.map((k) => {
+    const values = [...now];
+    values[t] = Number((now[t] + k * 0.01).toFixed(10));
+    const entry = p.entries.get(JSON.stringify(values));
+    return entry ? !!entry.bitmap : null;
+  });
+}""" % _KEPT
+
+_UNDECODE = """(id) => { const p = (%s)(id);
+  for (const e of p.entries.values()) { if (e.bitmap) e.bitmap.close();
+                                        e.bitmap = null; e.decoding = null; }
+  p.decoded = []; }""" % _KEPT
+
+
+def test_a_slider_moving_has_its_next_kept_pictures_decoded_before_they_are_reached(bezier):
+    """Decoding a kept picture takes 5-15 ms: begun only when the slider reaches it, the page
+    has often moved on by then. The next values the way the slider moves are decoded ahead."""
+    notebook, kernel, view, ident = bezier
+    page = notebook.page
+    _steady(page, ident)
+    t = _t_index(kernel)
+    slider = view.locator(".widget-slider").first
+    slider.locator(".noUi-handle").first.focus()
+    page.keyboard.press("ArrowLeft")
+    page.keyboard.press("ArrowRight")          # t moves up: the kernel draws on that way
+    deadline = time.monotonic() + 30
+    while None in page.evaluate(_AHEAD, [ident, t, [1, 2, 3, 4]]):
+        assert time.monotonic() < deadline, page.evaluate(_AHEAD, [ident, t, [1, 2, 3, 4]])
+        time.sleep(0.1)
+    _steady(page, ident)
+    page.evaluate(_UNDECODE, ident)            # as if they had come long before
+    page.keyboard.press("ArrowRight")
+    deadline = time.monotonic() + 5
+    while page.evaluate(_AHEAD, [ident, t, [1, 2, 3]]) != [True] * 3 and \
+            time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert page.evaluate(_AHEAD, [ident, t, [1, 2, 3]]) == [True] * 3
+    assert notebook.console_errors == []
+
+
 def test_the_mouse_on_the_figure_forgets_the_kept_pictures_until_new_ones_come(bezier):
     notebook, kernel, view, ident = bezier
     page = notebook.page
