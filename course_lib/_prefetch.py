@@ -205,6 +205,29 @@ def _steps(control, value):
             if 0 <= k <= count]
 
 
+def heading_first(values, now, heading):
+    """`values` (a control's candidates, nearest first) reordered for a control that last
+    moved by `heading` from `now`: those that way go three times as far as those back, and
+    twice as far as those aside (the other end of a range slider).
+
+    Examples
+    --------
+    >>> heading_first([4, 6, 3, 7, 2, 8, 1, 9], 5, 1)       # moved up last
+    [6, 4, 7, 8, 9, 3, 2, 1]
+    >>> heading_first([(1, 3), (3, 3), (2, 2), (2, 4), (0, 3), (2, 5)], (2, 3), (0, 1))
+    [(1, 3), (3, 3), (2, 4), (2, 5), (2, 2), (0, 3)]
+    """
+    def rank(item):
+        j, value = item
+        try:
+            along = float(np.dot(np.subtract(value, now, dtype=float).ravel(),
+                                 np.ravel(np.asarray(heading, dtype=float))))
+        except (TypeError, ValueError):
+            return j + 1
+        return (j + 1) * (1 if along > 0 else 2 if along == 0 else 3)
+    return [v for _, v in sorted(enumerate(values), key=lambda item: (rank(item), item[0]))]
+
+
 def _on_grid(control, k):
     """The value of a linear slider's `k`-th position."""
     import ipywidgets as w
@@ -566,6 +589,7 @@ class Prefetcher:
         self.sent = {}                 # canonical values -> checksum of the picture sent
         self.epoch = 0                 # mouse releases on the figure seen by the kernel
         self.focus = None
+        self.heading = None            # (control, how far it moved last): the way it goes
         self.decoder = None
         self.enabled = True
         self.skip = set()              # ids of controls whose pictures cannot be drawn ahead
@@ -605,6 +629,14 @@ class Prefetcher:
         owner = change["owner"]
         self.focus = owner
         self.spent = 0.0
+        self.heading = None
+        if not isinstance(change["new"], (bool, str)):
+            try:
+                moved = np.subtract(change["new"], change["old"], dtype=float)
+            except (TypeError, ValueError):
+                return
+            if np.all(np.isfinite(moved)) and np.any(moved):
+                self.heading = (owner, moved)
 
     def _mouse(self, widget, content, buffers):
         if not isinstance(content, dict):
@@ -688,6 +720,11 @@ class Prefetcher:
 
         order = []
         moved = focus is not None and self.focus is not None
+        if moved and self.heading is not None and self.heading[0] is focus:
+            # a control being dragged goes on the same way most likely
+            name = next(n for c, n in movable if c is focus)
+            lists[id(focus)] = heading_first(lists[id(focus)], getattr(focus, name),
+                                             self.heading[1])
         if focus is not None:
             # the control moved goes on moving most likely: a few steps further along it
             # first (then the others' single steps, which each new value of it renews)

@@ -169,12 +169,19 @@ def test_the_plan_takes_one_step_of_every_control_then_goes_further_along_the_on
     # untouched: one step either side of the slider, the other state of each check box
     assert first[:2] == [("t", 0.39), ("t", 0.41)]
     assert len(first) == 2 + sum(isinstance(c, w.Checkbox) for c, _ in prefetch.controls)
-    t.value = 0.5                                   # the student moves t
+    t.value = 0.5                                   # the student moves t up
     plan = [(c.description, v) for c, v, _ in prefetch.plan()]
-    assert plan[:2] == [("t", 0.49), ("t", 0.51)]
+    # a step either side, then on the way it moved three steps for every one back
+    assert sorted(plan[:2]) == [("t", 0.49), ("t", 0.51)]
     further = [v for d, v in plan[2:] if d == "t"]
-    assert further[:4] == [0.48, 0.52, 0.47, 0.53]
+    assert further[:4] == [0.52, 0.53, 0.54, 0.48]
     assert len(further) + 2 == _prefetch.FOCUS_FRAMES
+    ups = [v for v in further if v > 0.5]
+    assert len(ups) >= 2.5 * (len(further) - len(ups)), further
+    t.value = 0.45                                  # and then down
+    # ranks (place in the nearest-first list, times 1 on the way, 3 back): 0.44 1, 0.43 3,
+    # 0.42 5, 0.46 6, 0.41 7
+    assert [v for c, v, _ in prefetch.plan() if c is t][:5] == [0.44, 0.43, 0.42, 0.46, 0.41]
 
 
 def test_a_step_sends_the_picture_and_the_values_the_page_will_have():
