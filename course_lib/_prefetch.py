@@ -649,7 +649,14 @@ class Prefetcher:
             if self.turning is not None:
                 self.focus = self.turning
                 self.spent = 0.0
+                self._turned_from = self.turning.value
                 self.wake()                # no frame follows a press: nothing else wakes it
+        elif content.get("type") == "motion_notify" and self.turning is not None:
+            # (after the axes' own handler: ipympl's runs first) the way the view turns
+            now = self.turning.value
+            last, self._turned_from = getattr(self, "_turned_from", None), now
+            if last is not None and now != last:
+                self.heading = (self.turning, np.subtract(now, last, dtype=float))
         elif content.get("type") == "button_release":
             if self.turning is not None:
                 self.focus, self.turning = self.turning, None

@@ -286,6 +286,32 @@ def test_a_press_on_a_3d_axes_starts_a_turn_drawn_ahead_and_keeps_the_pictures(m
     assert not prefetch.sent and prefetch.epoch == 2
 
 
+def test_a_view_being_turned_is_drawn_ahead_the_way_it_turns(monkeypatch):
+    from course_lib.widgets.gimbal import GimbalExplorer
+
+    explorer = GimbalExplorer()
+    prefetch = _prefetch.attach(explorer)
+    canvas = explorer.fig.canvas
+    canvas.draw()
+    prefetch.decoder = _Decoder()
+    monkeypatch.setattr(prefetch, "wake", lambda delay=0: None)
+    (view,) = prefetch.views
+    view.value = (20.0, 30.0)
+    width, height = explorer.fig.bbox.width, explorer.fig.bbox.height
+    left, top, right, bottom = view.box()
+    press = {"type": "button_press", "button": 0,
+             "x": (left + right) / 2 * width, "y": (top + bottom) / 2 * height}
+    prefetch._mouse(canvas, press, [])
+    for azim in (29.0, 28.0):              # the axes turn (their own handler), then the message
+        view.value = (20.0, azim)
+        prefetch._mouse(canvas, {"type": "motion_notify"}, [])
+    ahead = [v for c, v, _ in prefetch.plan() if c is view][:12]
+    assert ahead[0] == (20, 27), ahead
+    lower = sum(v[1] < 28 for v in ahead)
+    higher = sum(v[1] > 28 for v in ahead)
+    assert lower >= 2.5 * higher, ahead
+
+
 def test_a_kernel_frame_carries_the_values_it_shows_once_a_page_keeps_pictures():
     explorer, prefetch = _bezier()
     canvas = explorer.fig.canvas
