@@ -590,6 +590,7 @@ class Prefetcher:
         self.epoch = 0                 # mouse releases on the figure seen by the kernel
         self.focus = None
         self.heading = None            # (control, how far it moved last): the way it goes
+        self._turned_from = None       # the view at the turn's last mouse move
         self.decoder = None
         self.enabled = True
         self.skip = set()              # ids of controls whose pictures cannot be drawn ahead
@@ -654,7 +655,7 @@ class Prefetcher:
         elif content.get("type") == "motion_notify" and self.turning is not None:
             # (after the axes' own handler: ipympl's runs first) the way the view turns
             now = self.turning.value
-            last, self._turned_from = getattr(self, "_turned_from", None), now
+            last, self._turned_from = self._turned_from, now
             if last is not None and now != last:
                 self.heading = (self.turning, np.subtract(now, last, dtype=float))
         elif content.get("type") == "button_release":
