@@ -217,11 +217,12 @@ def heading_first(values, now, heading):
     >>> heading_first([(1, 3), (3, 3), (2, 2), (2, 4), (0, 3), (2, 5)], (2, 3), (0, 1))
     [(1, 3), (3, 3), (2, 4), (2, 5), (2, 2), (0, 3)]
     """
+    way = np.ravel(np.asarray(heading, dtype=float))
+
     def rank(item):
         j, value = item
         try:
-            along = float(np.dot(np.subtract(value, now, dtype=float).ravel(),
-                                 np.ravel(np.asarray(heading, dtype=float))))
+            along = float(np.dot(np.subtract(value, now, dtype=float).ravel(), way))
         except (TypeError, ValueError):
             return j + 1
         return (j + 1) * (1 if along > 0 else 2 if along == 0 else 3)

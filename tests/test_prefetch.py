@@ -149,6 +149,26 @@ def _bezier():
     return explorer, prefetch
 
 
+def _gimbal(monkeypatch):
+    """The gimbal explorer (one 3D axes) with a page keeping its pictures, ``wake`` recorded
+    instead of scheduled: (explorer, prefetch, its view, the times woken, the page's message
+    for a left press in the middle of the axes: canvas pixels from the top left)."""
+    from course_lib.widgets.gimbal import GimbalExplorer
+
+    explorer = GimbalExplorer()
+    prefetch = _prefetch.attach(explorer)
+    explorer.fig.canvas.draw()
+    prefetch.decoder = _Decoder()
+    woken = []
+    monkeypatch.setattr(prefetch, "wake", lambda delay=0: woken.append(delay))
+    (view,) = prefetch.views
+    width, height = explorer.fig.bbox.width, explorer.fig.bbox.height
+    left, top, right, bottom = view.box()
+    press = {"type": "button_press", "button": 0,
+             "x": (left + right) / 2 * width, "y": (top + bottom) / 2 * height}
+    return explorer, prefetch, view, woken, press
+
+
 def _page_messages(canvas):
     """What the canvas sends a page that has shown it and places rectangles, recorded."""
     sent = []
@@ -247,23 +267,12 @@ def test_the_mouse_let_go_on_the_figure_makes_every_picture_sent_stale():
 
 
 def test_a_press_on_a_3d_axes_starts_a_turn_drawn_ahead_and_keeps_the_pictures(monkeypatch):
-    from course_lib.widgets.gimbal import GimbalExplorer
-
-    explorer = GimbalExplorer()
-    prefetch = _prefetch.attach(explorer)
+    explorer, prefetch, view, woken, press = _gimbal(monkeypatch)
     canvas = explorer.fig.canvas
-    canvas.draw()
-    prefetch.decoder = _Decoder()
-    woken = []
-    monkeypatch.setattr(prefetch, "wake", lambda delay=0: woken.append(delay))
     prefetch.step()
     assert prefetch.sent
-    (view,) = prefetch.views
-    width, height = explorer.fig.bbox.width, explorer.fig.bbox.height
-    left, top, right, bottom = view.box()
-    # the page's message: canvas pixels from the top left, button 0 the left one
-    press = {"type": "button_press", "button": 0,
-             "x": (left + right) / 2 * width, "y": (top + bottom) / 2 * height}
+    width = explorer.fig.bbox.width
+    left = view.box()[0]
     woken.clear()
     prefetch._mouse(canvas, press, [])
     # the view is what the student moves now; no frame follows a press, so it wakes itself
@@ -287,20 +296,9 @@ def test_a_press_on_a_3d_axes_starts_a_turn_drawn_ahead_and_keeps_the_pictures(m
 
 
 def test_a_view_being_turned_is_drawn_ahead_the_way_it_turns(monkeypatch):
-    from course_lib.widgets.gimbal import GimbalExplorer
-
-    explorer = GimbalExplorer()
-    prefetch = _prefetch.attach(explorer)
+    explorer, prefetch, view, _, press = _gimbal(monkeypatch)
     canvas = explorer.fig.canvas
-    canvas.draw()
-    prefetch.decoder = _Decoder()
-    monkeypatch.setattr(prefetch, "wake", lambda delay=0: None)
-    (view,) = prefetch.views
     view.value = (20.0, 30.0)
-    width, height = explorer.fig.bbox.width, explorer.fig.bbox.height
-    left, top, right, bottom = view.box()
-    press = {"type": "button_press", "button": 0,
-             "x": (left + right) / 2 * width, "y": (top + bottom) / 2 * height}
     prefetch._mouse(canvas, press, [])
     for azim in (29.0, 28.0):              # the axes turn (their own handler), then the message
         view.value = (20.0, azim)

@@ -121,7 +121,8 @@ def _on_main_thread(handler, loop, main):
 
     @functools.wraps(handler)
     def forward(stream, ident, msg):
-        if threading.current_thread() is main:
+        direct = threading.current_thread() is main
+        if direct:
             # ipykernel sends a comm's first message (a button's first click) to the main
             # thread directly: while older messages of other widgets still wait (a slider
             # dragged just before), it waits behind them, or the click would act on a value
@@ -129,17 +130,14 @@ def _on_main_thread(handler, loop, main):
             if not comms_waiting():
                 return handler(stream, ident, msg)
             forward.deferred += 1
-            with lock:
-                waiting.append([contextvars.copy_context(), stream, ident, msg])
-            loop.add_callback(handle_oldest)
-            return None
-        forward.forwarded += 1
+        else:
+            forward.forwarded += 1
         if forward.trace is not None:
             forward.trace("arrive", msg["header"]["msg_id"])
-        # the context carries the message as the kernel's parent (set by the subshell)
+        # the context carries the message as the kernel's parent (set by the shell that got it)
         entry = [contextvars.copy_context(), stream, ident, msg]
         with lock:
-            if waiting and _supersedes(msg, waiting[-1][3]):
+            if not direct and waiting and _supersedes(msg, waiting[-1][3]):
                 waiting[-1] = entry
                 forward.merged += 1
                 return None
