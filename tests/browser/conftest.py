@@ -8,9 +8,13 @@ from .lab import ROOT, LabServer, launch_browser
 
 
 def _notebook_hashes():
+    """Every file under the course's notebook folders, checkpoints included: a checkpoint
+    JupyterLab writes beside a notebook it opens would count as a change to the course (the
+    hub test, running beside these, checks the same folders)."""
     return {p: hashlib.sha256(p.read_bytes()).hexdigest()
             for folder in ("notebooks", "solutions", "exercises")
-            for p in sorted((ROOT / folder).glob("*.ipynb"))}
+            for p in sorted((ROOT / folder).rglob("*"))
+            if p.is_file() and "__pycache__" not in p.parts}
 
 
 @pytest.fixture(scope="session")
@@ -19,7 +23,7 @@ def lab(tmp_path_factory):
     server = LabServer(tmp_path_factory.mktemp("jupyterlab")).start()
     yield server
     server.stop()
-    changed = [p.name for p, digest in _notebook_hashes().items() if before.get(p) != digest]
+    changed = [str(p.relative_to(ROOT)) for p, digest in _notebook_hashes().items() if before.get(p) != digest]
     assert not changed, f"the browser tests wrote to the repository's notebooks: {changed}"
 
 

@@ -77,7 +77,10 @@ class LabServer:
         self.process = subprocess.Popen(
             [str(jupyter), "lab", "--no-browser", "--allow-root", "--ip", "127.0.0.1",
              "--port", str(self.port), f"--IdentityProvider.token={self.token}",
-             f"--ServerApp.root_dir={ROOT}", "--LabApp.expose_app_in_browser=True"],
+             f"--ServerApp.root_dir={ROOT}", "--LabApp.expose_app_in_browser=True",
+             # checkpoints (JupyterLab makes one for each notebook it opens) go to the
+             # server's own folder, never beside the course's notebooks
+             f"--FileCheckpoints.checkpoint_dir={self.tmp / 'checkpoints'}"],
             env=self.environment(), stdout=log, stderr=subprocess.STDOUT)
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
