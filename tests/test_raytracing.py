@@ -574,6 +574,33 @@ def test_supersampling_averages_the_finer_image():
                                atol=1e-12)
 
 
+@pytest.mark.parametrize("rows", [1, 5, 18, 40])
+def test_render_in_bands_traces_the_ray_tree_of_every_pixel(rows):
+    """Band by band: each step adds the next `rows` rows (the rest still black), every pixel of
+    the last step is its own ray tree's sum (trace_tree, one ray at a time) and the counts add
+    up to the rays of the whole image; with jittered supersampling too."""
+    scene = rt.example_scene("spheres", 24, 18)
+    steps = list(rt.render_bands(scene, max_depth=2, rows=rows))
+    assert [done for _, _, done in steps] == [min(k + rows, 18) for k in range(0, 18, rows)]
+    before = 0
+    for image, _, done in steps:
+        assert not image[done:].any() and image[before:done].any()
+        before = done
+    image, counts, _ = steps[-1]
+    rays = scene.camera.rays()
+    for j, i in ((0, 0), (5, 5), (9, 12), (17, 20), (12, 8)):
+        tree = rt.trace_tree(scene, rays.origins[j, i, 0], rays.directions[j, i, 0], max_depth=2)
+        np.testing.assert_allclose(image[j, i], np.clip(tree.total(), 0, 1), atol=1e-9)
+    _, whole = rt.render(scene, max_depth=2, return_counts=True)
+    assert counts == whole and counts.primary == 24 * 18
+    *_, (jittered, _, _) = rt.render_bands(scene, max_depth=1, rows=rows, supersampling=4,
+                                           seed=3, jitter=True)
+    np.testing.assert_allclose(jittered, rt.render(scene, max_depth=1, supersampling=4, seed=3,
+                                                   jitter=True), atol=1e-12)
+    with pytest.raises(ValueError, match="rows"):
+        next(rt.render_bands(scene, rows=0))
+
+
 def test_mesh_scene_renders_and_matches_brute_force_hits():
     scene = rt.example_scene("mesh", 16, 12)
     mesh = scene.objects[1]

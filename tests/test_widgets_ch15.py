@@ -2,6 +2,9 @@
 points lie on the surfaces, reflections keep the angle, refractions obey Snell's law, shadow
 rays aim at the light and are blocked exactly when a sphere lies in the way (own quadratic);
 the explorer's camera orbit, its shadows and its materials against own ray-sphere tests."""
+import asyncio
+import threading
+
 import numpy as np
 import pytest
 
@@ -218,6 +221,66 @@ def test_preview_then_full_image():
     shown = np.asarray(Image.open(io.BytesIO(ex.png())))
     assert shown.shape == (raytracer.FULL[1], raytracer.FULL[0], 3)
     assert np.array_equal(shown, np.round(np.flipud(ex.current["image"]) * 255))
+
+
+def test_the_full_image_comes_in_bands_and_an_input_between_two_abandons_it(monkeypatch):
+    """On an event loop, as in a live kernel: the full image is traced band by band once the
+    sliders rest. A slider moved while a band is being traced (a kernel queues the student's
+    message on the loop, as here) is answered before the next band: its preview is shown at
+    once, the half-made image is dropped (never shown, no band of it traced after) and the new
+    state's full image follows, the same as the whole-image render of that state."""
+    bands = 240 // 60
+    real = raytracer.scene_bands
+    loop = asyncio.new_event_loop()
+    shown, traced_then, made = [], [], {}
+
+    def move_mirror():                      # the student's input, handled on the loop
+        traced_then.append(made["explorer"].bands_traced)
+        made["explorer"].mirror.value = 0.3
+
+    def bands_with_an_input(state, rows):
+        for k, s in enumerate(real(state, rows)):
+            if k == 1 and not traced_then:  # arrives while the first full image's band 2 is
+                loop.call_soon_threadsafe(move_mirror)      # traced (from the kernel's shell)
+            yield s
+
+    async def student():
+        ex = made["explorer"] = raytracer.RayTracerExplorer(settle_seconds=0.01, band_rows=60)
+        ex.image.observe(lambda _: shown.append((ex.current["preview"], ex.state.max_depth,
+                                                 ex.state.mirror_reflectivity)), "value")
+        ex.depth.value = 1
+        for _ in range(20000):
+            await asyncio.sleep(0.001 if ex.pending else 0)
+            if not ex.pending:
+                return ex
+        raise AssertionError(f"no full image after 20000 turns of the loop ({shown})")
+
+    monkeypatch.setattr(raytracer, "scene_bands", bands_with_an_input)
+    out = {}
+
+    def run():                      # a loop of its own, on a thread of its own
+        try:
+            out["explorer"] = loop.run_until_complete(student())
+        except BaseException as error:          # re-raised on the test's thread below
+            out["error"] = error
+        finally:
+            loop.close()
+
+    thread = threading.Thread(target=run)
+    thread.start()
+    thread.join(120)
+    assert not thread.is_alive(), "the event loop did not finish within 120 s"
+    if "error" in out:
+        raise out["error"]
+    explorer = out["explorer"]
+    assert traced_then == [2], "the input was handled before or after the band it came in"
+    # the depth-1 image was abandoned after 2 bands; the mirror's image took all of its own
+    assert explorer.bands_traced == 2 + bands
+    assert shown == [(True, 1, 0.85), (True, 1, 0.3), (False, 1, 0.3)]
+    whole = raytracer.scene(raytracer.State(max_depth=1, mirror_reflectivity=0.3))
+    assert np.allclose(explorer.current["image"], whole["image"])
+    assert explorer.current["counts"] == whole["counts"]
+    assert explorer.current["text"] == whole["text"]
 
 
 def test_shadows_against_own_geometry():

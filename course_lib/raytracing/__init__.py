@@ -169,7 +169,7 @@ from .camera import (Camera, CameraRays, camera_rays)
 from .scene import (Mesh, Plane, Scene, Sphere, WhittedMaterial)
 from .scene import WhittedMaterial as Material     # its old name, the same class
 from .hits import (SceneHits, intersect_scene)
-from .whitted import (RayCounts, RayNode, render, trace_tree)
+from .whitted import (RayCounts, RayNode, render, render_bands, trace_tree)
 from .examples import (example_scene)
 
 __all__ = [
@@ -198,6 +198,7 @@ __all__ = [
     "reflect_direction",
     "refract_direction",
     "render",
+    "render_bands",
     "schlick",
     "trace_tree",
 ]

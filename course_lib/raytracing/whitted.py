@@ -10,7 +10,7 @@ from ._common import DEFAULT_EPSILON, _nonzero_vectors
 from .camera import Camera
 from .hits import _Compiled, _generation
 
-__all__ = ["RayCounts", "RayNode", "render", "trace_tree"]
+__all__ = ["RayCounts", "RayNode", "render", "render_bands", "trace_tree"]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -122,6 +122,67 @@ def render(scene, camera=None, max_depth=3, shadows=True, supersampling=1, seed=
     >>> image.shape, counts.primary, bool(0 <= image.min() and image.max() <= 1)
     ((24, 32, 3), 768, True)
     """
+    c, rays, options = _prepare(scene, camera, max_depth, supersampling, seed, jitter, epsilon,
+                                min_weight, shadows)
+    image, counts = _trace_rows(c, rays.origins, rays.directions, *options)
+    return (image, RayCounts(**counts)) if return_counts else image
+
+
+def render_bands(scene, camera=None, rows=16, max_depth=3, shadows=True, supersampling=1,
+                 seed=None, jitter=False, epsilon=DEFAULT_EPSILON, min_weight=0.0):
+    r"""Whitted ray tracing a band of image rows at a time: yields the image so far.
+
+    The same rays and the same sum as :func:`render`, traced `rows` image rows at a time (every
+    ray of a pixel is independent of every other pixel's, so splitting the image into bands
+    changes nothing). Each step yields ``(image, counts, done)``: the image with the rows
+    traced so far (the others black), the :class:`RayCounts` so far and how many rows are done;
+    the last step's image is the finished picture. An interactive program can show something
+    after each band, or (as :class:`course_lib.widgets.raytracer.RayTracerExplorer` does) answer
+    the student's next input between two bands and abandon the rest.
+
+    Parameters
+    ----------
+    scene, camera, max_depth, shadows, supersampling, seed, jitter, epsilon, min_weight
+        As for :func:`render`.
+    rows : int, optional
+        Image rows per step (>= 1; the last band may be shorter).
+
+    Yields
+    ------
+    image : ndarray, shape (height, width, 3)
+        Row 0 is the bottom, as :func:`render`'s; rows not yet traced are 0.
+    counts : RayCounts
+        The rays traced so far.
+    done : int
+        Rows traced so far (from the bottom).
+
+    Examples
+    --------
+    >>> from course_lib.raytracing import example_scene
+    >>> scene = example_scene("spheres")
+    >>> steps = list(render_bands(scene, scene.camera.resized(32, 24), rows=10))
+    >>> [done for _, _, done in steps]
+    [10, 20, 24]
+    >>> bool(np.allclose(steps[-1][0], render(scene, scene.camera.resized(32, 24))))
+    True
+    """
+    step = as_whole(rows, "rows", 1)
+    c, rays, options = _prepare(scene, camera, max_depth, supersampling, seed, jitter, epsilon,
+                                min_weight, shadows)
+    h, w = rays.directions.shape[:2]
+    image = np.zeros((h, w, 3))
+    counts = dict.fromkeys(RayCounts._fields, 0)
+    for start in range(0, h, step):
+        band = slice(start, min(start + step, h))
+        image[band], more = _trace_rows(c, rays.origins[band], rays.directions[band], *options)
+        counts = {kind: counts[kind] + more[kind] for kind in counts}
+        yield image.copy(), RayCounts(**counts), band.stop
+
+
+def _prepare(scene, camera, max_depth, supersampling, seed, jitter, epsilon, min_weight,
+             shadows):
+    """Check the arguments of :func:`render`: the compiled scene, the camera's rays and the
+    options of :func:`_trace_rows`."""
     c = _Compiled(scene)
     camera = scene.camera if camera is None else camera
     if camera is None:
@@ -129,10 +190,15 @@ def render(scene, camera=None, max_depth=3, shadows=True, supersampling=1, seed=
     if not isinstance(camera, Camera):
         raise TypeError(f"camera must be a Camera, got {type(camera).__name__}")
     depth, eps, min_weight = _render_options(max_depth, epsilon, min_weight)
-    rays = camera.rays(supersampling, seed, jitter)
-    h, w, s, _ = rays.directions.shape
-    o = rays.origins.reshape(-1, 3)
-    d = rays.directions.reshape(-1, 3)
+    return c, camera.rays(supersampling, seed, jitter), (depth, bool(shadows), eps, min_weight)
+
+
+def _trace_rows(c, origins, directions, depth, shadows, eps, min_weight):
+    """Trace camera rays of shape (rows, width, samples, 3), generation by generation: the
+    clamped mean colour per pixel (rows, width, 3) and the ray counts (a dict)."""
+    h, w, s, _ = directions.shape
+    o = origins.reshape(-1, 3)
+    d = directions.reshape(-1, 3)
     n = len(o)
     colour = np.zeros((n, 3))
     pixel = np.arange(n)
@@ -153,8 +219,7 @@ def render(scene, camera=None, max_depth=3, shadows=True, supersampling=1, seed=
         if not parts or sum(len(part[0]) for part in parts) == 0:
             break
         pixel, o, d, weight = (np.concatenate([part[i] for part in parts]) for i in range(4))
-    image = np.clip(colour.reshape(h, w, s, 3).mean(axis=2), 0.0, 1.0)
-    return (image, RayCounts(**counts)) if return_counts else image
+    return np.clip(colour.reshape(h, w, s, 3).mean(axis=2), 0.0, 1.0), counts
 
 
 @dataclass(eq=False)

@@ -12,6 +12,9 @@ A full ray-traced image takes most of a second in numpy, far too slow to follow 
 while a slider moves, the explorer renders a **low-resolution preview** (:data:`PREVIEW`
 pixels, 1/16 of the rays, well under 100 ms), shown with big square pixels; once the slider
 has been still for :data:`SETTLE_SECONDS` the **full image** (:data:`FULL`) replaces it. The
+full image is traced :data:`BAND_ROWS` rows at a time (:func:`course_lib.raytracing.render_bands`)
+on the kernel's event loop, so a slider moved while it is being made is answered after at most
+one band (tens of milliseconds), not after the whole image: the rest of it is abandoned. The
 picture is shown as an image widget (like :mod:`course_lib.widgets.surface`), so it needs no
 matplotlib canvas and costs one PNG encoding per update.
 """
@@ -26,13 +29,14 @@ from .. import raytracing as rt
 from . import _style
 from ._base import Explorer, align, beside, bind, checkbox, panel, slider
 
-__all__ = ["FULL", "PREVIEW", "RayTracerExplorer", "State", "TARGET", "build_scene",
-           "make_camera", "scene"]
+__all__ = ["BAND_ROWS", "FULL", "PREVIEW", "RayTracerExplorer", "State", "TARGET",
+           "build_scene", "make_camera", "scene", "scene_bands"]
 
 PREVIEW = (80, 60)          # width, height of the preview while a slider moves
 FULL = (320, 240)           # width, height of the full image
 DISPLAY_WIDTH = 480         # pixels on screen
 SETTLE_SECONDS = 0.35       # a slider still this long counts as released
+BAND_ROWS = 16              # full-image rows traced between two looks at the student's input
 TARGET = np.array([0.0, 0.8, -0.2])
 """The point the camera orbits around and looks at (between the three spheres)."""
 FOV_DEG = 45.0
@@ -130,6 +134,30 @@ def scene(state, preview=False):
     camera = make_camera(state, width, height)
     image, counts = rt.render(build_scene(state), camera, max_depth=state.max_depth,
                               shadows=state.shadows, return_counts=True)
+    return _result(state, preview, image, counts, camera)
+
+
+def scene_bands(state, rows=BAND_ROWS):
+    """The full image of :func:`scene`, traced `rows` image rows at a time: yields None after
+    each band but the last, then the same dict as ``scene(state)``.
+
+    Examples
+    --------
+    >>> steps = list(scene_bands(State(max_depth=0), rows=100))
+    >>> steps[:-1], steps[-1]["image"].shape
+    ([None, None], (240, 320, 3))
+    """
+    camera = make_camera(state, *FULL)
+    for image, counts, done in rt.render_bands(build_scene(state), camera, rows,
+                                               max_depth=state.max_depth,
+                                               shadows=state.shadows):
+        if done < camera.height:
+            yield None
+    yield _result(state, False, image, counts, camera)
+
+
+def _result(state, preview, image, counts, camera):
+    width, height = camera.width, camera.height
     depth = state.max_depth
     if depth == 0:
         what = ("Depth 0: ray casting with shadow rays — the mirror and the glass show only "
@@ -163,8 +191,9 @@ class RayTracerExplorer(Explorer):
     """Sliders for recursion depth, shadows, materials and camera; a preview while sliding and
     the full ray-traced image when the slider rests.
 
-    In a live kernel the full image is rendered :data:`SETTLE_SECONDS` after the last change
-    (on the kernel's event loop). Without a running event loop (a script, a test) the full
+    In a live kernel the full image is rendered :data:`SETTLE_SECONDS` after the last change,
+    on the kernel's event loop, `band_rows` rows at a time: a change while it is being made
+    abandons it and shows the new preview. Without a running event loop (a script, a test) the full
     image waits for :meth:`settle` (or the "render full image" button).
 
     Examples
@@ -182,13 +211,16 @@ class RayTracerExplorer(Explorer):
                "rays on/off, mirror k_r, glass k_t and refractive index, floor k_r, camera "
                "orbit; a low-resolution preview while sliding, the full image on release.")
 
-    def __init__(self, state=None, settle_seconds=SETTLE_SECONDS):
+    def __init__(self, state=None, settle_seconds=SETTLE_SECONDS, band_rows=BAND_ROWS):
         import ipywidgets as w
 
         self.state = state or State()
         self.settle_seconds = settle_seconds
+        self.band_rows = band_rows
         self.pending = False
+        self.bands_traced = 0           # bands of full images traced (abandoned ones too)
         self._timer = None
+        self._bands = None
         self.last_ms = 0.0
         self.image = w.Image(format="png", layout=w.Layout(width=f"{DISPLAY_WIDTH}px"))
         st = self.state
@@ -230,34 +262,63 @@ class RayTracerExplorer(Explorer):
         self._schedule_full()
 
     def _schedule_full(self):
-        if self._timer is not None:
-            self._timer.cancel()
-            self._timer = None
+        self._cancel()
         try:
             loop = asyncio.get_running_loop()
         except RuntimeError:            # no event loop (a script or a test): wait for settle()
             return
-        self._timer = loop.call_later(self.settle_seconds, self.settle)
+        self._timer = loop.call_later(self.settle_seconds, self._start_full, loop)
 
-    def settle(self):
-        """Render the full image now (what happens when the slider has come to rest)."""
+    def _cancel(self):
+        """Forget a full image waiting to start or half made (a newer input came)."""
         if self._timer is not None:
             self._timer.cancel()
             self._timer = None
+        self._bands = None
+
+    def _start_full(self, loop):
+        self._timer = None
+        self._bands = scene_bands(self.state, self.band_rows)
+        self._band_seconds = 0.0
+        self.status.value = f"<i>tracing the full image {FULL[0]}×{FULL[1]}…</i>"
+        self._timer = loop.call_soon(self._next_band, loop)
+
+    def _next_band(self, loop):
+        """Trace one band of the full image, then give the event loop back: an input that came
+        meanwhile (queued on the loop, see :func:`._base.handle_comms_on_main_thread`) is
+        handled before the next band and cancels it."""
+        self._timer = None
+        start = time.perf_counter()
+        s = next(self._bands)
+        self._band_seconds += time.perf_counter() - start
+        self.bands_traced += 1
+        if s is None:
+            self._timer = loop.call_soon(self._next_band, loop)
+            return
+        self._bands = None
+        self._show(s, 1e3 * self._band_seconds)
+        self.pending = False
+
+    def settle(self):
+        """Render the full image now (what happens when the slider has come to rest)."""
+        self._cancel()
         self._render(preview=False)
         self.pending = False
 
     def _render(self, preview):
         start = time.perf_counter()
         s = scene(self.state, preview)
-        scale = FULL[0] // PREVIEW[0] if preview else 1
-        self.image.value = _png(s["image"], scale)
-        self.last_ms = 1e3 * (time.perf_counter() - start)
+        self._show(s, 1e3 * (time.perf_counter() - start))
+
+    def _show(self, s, ms):
+        scale = FULL[0] // PREVIEW[0] if s["preview"] else 1
         self.current = s
+        self.last_ms = ms
+        self.image.value = _png(s["image"], scale)
         self.info.value = s["text"]
-        self.status.value = (f"<i>preview {PREVIEW[0]}×{PREVIEW[1]} in {self.last_ms:.0f} ms — "
-                             "the full image follows when the slider rests</i>" if preview else
-                             f"<i>full image {FULL[0]}×{FULL[1]}</i>")
+        self.status.value = (f"<i>preview {PREVIEW[0]}×{PREVIEW[1]} in {ms:.0f} ms — "
+                             "the full image follows when the slider rests</i>"
+                             if s["preview"] else f"<i>full image {FULL[0]}×{FULL[1]}</i>")
 
     def png(self, dpi=None):
         """The current picture as PNG bytes (for readers without a kernel)."""
