@@ -271,6 +271,11 @@ DRIVE = r"""({points, rate, handle}) => new Promise((resolve) => {
 })"""
 
 
+#: How far apart the browser's and the kernel's clocks may read the same moment (ms): a stage
+#: shorter than minus this was matched to the wrong input.
+CLOCK_SLACK_MS = 2
+
+
 def _breakdown(samples, kernel_log):
     """Median milliseconds of each stage of a frame's path, over the samples that could be
     followed from the input to the frame (the frame's message names the input's message as its
@@ -292,14 +297,15 @@ def _breakdown(samples, kernel_log):
         if encode is None or encode[1] > s["recv"]["t"]:
             continue
         sent = next((t for t in sents if t >= encode[1]), encode[1])
-        stages["input -> message sent"].append(s["send"]["t"] - s["input"])
-        stages["to the kernel (subshell)"].append(arrive[own] - s["send"]["t"])
-        stages["wait for the main thread"].append(start[parent] - arrive[own])
-        stages["update (before encoding)"].append(encode[0] - start[parent])
-        stages["PNG encode"].append(encode[1] - encode[0])
-        stages["back to the browser"].append(s["recv"]["t"] - sent)
-        stages["decode + draw"].append(s["drawn"] - s["recv"]["t"])
-        stages["until painted"].append(s["shown"] - s["drawn"])
+        times = [s["send"]["t"] - s["input"], arrive[own] - s["send"]["t"],
+                 start[parent] - arrive[own], encode[0] - start[parent], encode[1] - encode[0],
+                 s["recv"]["t"] - sent, s["drawn"] - s["recv"]["t"], s["shown"] - s["drawn"]]
+        if min(times) < -CLOCK_SLACK_MS:
+            # out of order (a stage ends before it begins): the frame was matched to a trace
+            # that is not its input's, so it cannot be followed; leave it out
+            continue
+        for name, ms in zip(stages, times):
+            stages[name].append(ms)
     return {name: (statistics.median(v) if v else None) for name, v in stages.items()}
 
 

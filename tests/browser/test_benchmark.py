@@ -47,7 +47,7 @@ def test_the_browser_benchmark_follows_inputs_to_frames():
             assert all(v is None for v in stages.values()), stages
             continue
         # every stage of the path was seen, and the stages add up to no more than the whole
-        assert all(v is not None and v > -2 for v in stages.values()), stages
+        assert all(v is not None and v > -bench.CLOCK_SLACK_MS for v in stages.values()), stages
         assert sum(stages.values()) <= 1.5 * row["p90_ms"] + 5, (stages, row["p90_ms"])
     (lesson,) = lessons
     # every explorer of the lesson went live (counted from the notebook's cells, not the run)
@@ -68,3 +68,17 @@ def test_a_drag_keeps_up_at_30_fps_or_with_a_frame_for_every_change():
     assert not bench.fluent({"fps": 2, "changes_per_s": 4})
     assert not bench.fluent({"fps": 0, "changes_per_s": 0})      # the drag changed nothing
     assert not bench.meets({"median_ms": 31, "fps": 60, "changes_per_s": 60})
+
+
+def test_the_breakdown_leaves_out_a_frame_matched_to_another_inputs_message():
+    """Two single inputs: the first is followed stage by stage; the second's frame names a
+    message the kernel started before that input was even made (a trace that is not its
+    input's): left out, instead of giving negative stages."""
+    log = {"arrive": {"a": 1003, "b": 1995}, "start": {"a": 1005, "b": 1200},
+           "encode": [("a", 1015, 1019), ("b", 1300, 1304)], "sent": [("a", 1020)]}
+    followed = {"input": 1000, "send": {"t": 1001, "id": "a"}, "recv": {"t": 1030, "parent": "a"},
+                "drawn": 1036, "shown": 1040}
+    mismatched = {"input": 1990, "send": {"t": 1991, "id": "b"},
+                  "recv": {"t": 2010, "parent": "b"}, "drawn": 2015, "shown": 2020}
+    stages = bench._breakdown([followed, mismatched], log)
+    assert list(stages.values()) == [1, 2, 2, 10, 4, 10, 6, 4]
