@@ -59,6 +59,8 @@ def fast_frames(canvas):
     if hasattr(canvas, "on_msg") and hasattr(canvas, "draw_idle"):
         _push_frames(canvas)
         _placed_frames(canvas)
+    if hasattr(canvas, "manager") and hasattr(canvas, "copy_from_bbox"):
+        _turned_views(canvas)
 
 
 def _kernel_loop():
@@ -103,6 +105,84 @@ def _push_frames(canvas):
 
     canvas.on_msg(seen)
     canvas.draw_idle = push
+
+
+def _turned_views(canvas):
+    """Make ``canvas.draw()`` redraw only the 3D axes when nothing else of the figure changed.
+
+    A 3D view turned by the mouse (or drawn ahead by :mod:`course_lib._prefetch`) needs a full
+    redraw, and a full redraw repaints every axes of the figure: in an explorer that shows a 3D
+    scene beside 2D plots (Slerp's angle curves, the hidden-surface explorer's buffers), the
+    2D axes' ticks and texts cost more than the turned scene itself. Here the figure drawn
+    without its 3D axes is kept (``canvas._course_rest``), and a draw in which no 2D axes and
+    no figure-level artist has changed since (matplotlib marks a changed artist and its axes
+    *stale*; the explorers' moving artists are *animated* and never part of it) pastes it back
+    and draws the 3D axes on top: the same picture, as the 3D axes do not overlap the others
+    (checked; else, and for a figure with no 2D part, the draw is matplotlib's own). Anything
+    that draws the figure another way (a full draw, a ``savefig``) drops the kept picture. The
+    draw ends with the figure's "draw_event", as matplotlib's does, so a
+    :class:`course_lib.draw.Blitter` takes its background and paints its artists as usual."""
+    from contextlib import ExitStack
+
+    from matplotlib.backend_bases import DrawEvent
+
+    fig = canvas.figure
+    full_draw = canvas.draw
+    canvas._course_rest = None
+    canvas._course_partial_draws = 0
+    mine = [False]
+
+    def others_changed(turned):
+        return any(child.stale for child in fig.get_children()
+                   if child not in turned and child is not fig.patch)
+
+    def overlapping(turned):
+        flat = [ax for ax in fig.axes if ax not in turned]
+        boxes = [ax.get_window_extent() for ax in flat]
+        return any(ax.get_window_extent().overlaps(box) for ax in turned for box in boxes)
+
+    def draw():
+        turned = [ax for ax in fig.axes if ax.name == "3d" and ax.get_visible()]
+        if not turned or len(turned) == len(fig.axes) and not fig.texts:
+            return full_draw()
+        renderer = canvas.get_renderer()
+        rest = canvas._course_rest
+        if rest is not None and (rest[0] is not renderer or others_changed(turned)):
+            rest = canvas._course_rest = None
+        if rest is None and overlapping(turned):
+            return full_draw()
+        if hasattr(canvas, "_png_is_old"):
+            canvas._png_is_old = True
+        mine[0] = True
+        try:
+            if rest is None:
+                # the figure without its 3D axes (hidden as animated artists are), no event
+                renderer.clear()
+                with ExitStack() as hold:
+                    hold.enter_context(canvas.callbacks.blocked(signal="draw_event"))
+                    for ax in turned:
+                        hold.callback(ax.set_animated, ax.get_animated())
+                        ax.set_animated(True)
+                    fig.draw(renderer)
+                canvas._course_rest = (renderer, canvas.copy_from_bbox(fig.bbox))
+            else:
+                canvas.restore_region(rest[1])
+                canvas._course_partial_draws += 1
+            for ax in turned:
+                ax.draw(renderer)
+            DrawEvent("draw_event", canvas, renderer)._process()
+        finally:
+            mine[0] = False
+            if getattr(canvas, "manager", None) is not None and \
+                    hasattr(canvas.manager, "refresh_all"):
+                canvas.manager.refresh_all()
+
+    def drawn_elsewhere(event):
+        if not mine[0]:
+            canvas._course_rest = None
+
+    canvas.mpl_connect("draw_event", drawn_elsewhere)
+    canvas.draw = draw
 
 
 def _whole_frames(canvas):
