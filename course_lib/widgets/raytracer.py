@@ -36,7 +36,7 @@ PREVIEW = (80, 60)          # width, height of the preview while a slider moves
 FULL = (320, 240)           # width, height of the full image
 DISPLAY_WIDTH = 480         # pixels on screen
 SETTLE_SECONDS = 0.35       # a slider still this long counts as released
-BAND_ROWS = 16              # full-image rows traced between two looks at the student's input
+BAND_ROWS = 8               # full-image rows traced between two looks at the student's input
 TARGET = np.array([0.0, 0.8, -0.2])
 """The point the camera orbits around and looks at (between the three spheres)."""
 FOV_DEG = 45.0
