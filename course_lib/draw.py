@@ -402,9 +402,9 @@ def _mesh_collection_class():
     class does the same in a few array operations: the same depths (the same `zsort`
     function per polygon), the same far-to-near order (a stable sort, as Python's `sorted`,
     so equal depths keep their order) and the same colours, so the picture is the same
-    (``tests/test_draw.py`` compares them pixel by pixel). Anything else (polygons of mixed
-    sizes, colour-mapped faces, clipping to the view limits, path codes) takes matplotlib's
-    own code.
+    (``tests/test_draw_meshes.py`` compares them pixel by pixel). Anything else (polygons of
+    mixed sizes, colour-mapped faces, clipping to the view limits, path codes) takes
+    matplotlib's own code.
     """
     from matplotlib.collections import PolyCollection
     from mpl_toolkits.mplot3d import proj3d

@@ -23,7 +23,8 @@ def lab(tmp_path_factory):
     server = LabServer(tmp_path_factory.mktemp("jupyterlab")).start()
     yield server
     server.stop()
-    changed = [str(p.relative_to(ROOT)) for p, digest in _notebook_hashes().items() if before.get(p) != digest]
+    changed = [str(p.relative_to(ROOT)) for p, digest in _notebook_hashes().items()
+               if before.get(p) != digest]
     assert not changed, f"the browser tests wrote to the repository's notebooks: {changed}"
 
 
