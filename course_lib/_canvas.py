@@ -471,6 +471,13 @@ function pictures(canvas, controls, views) {
   };
   p.receive = (msg, buffers) => {
     if (msg.type === 'clear') return p.forget();
+    if (msg.type === 'drop') {       // this one picture kept is no longer the kernel's
+      const key = keyOf(msg.state);
+      release(p.entries.get(key));
+      p.entries.delete(key);
+      if (p.displayed === key) p.displayed = null;
+      return;
+    }
     if (msg.type !== 'frame') return;
     p.epoch = Math.max(p.epoch, msg.epoch);
     // drawn before the kernel saw the mouse go up on the figure: perhaps stale

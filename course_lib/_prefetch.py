@@ -370,6 +370,17 @@ def inputs(explorer):
 
 
 @contextlib.contextmanager
+def _ahead(explorer):
+    """``explorer.drawing_ahead`` is True while inside: its updates draw values the student has
+    not chosen (and are taken back), so an explorer leaves its own work alone meanwhile."""
+    explorer.drawing_ahead = True
+    try:
+        yield
+    finally:
+        del explorer.drawing_ahead              # back to the class's False
+
+
+@contextlib.contextmanager
 def _held(canvas):
     """Nothing leaves the kernel while inside: no widget message (of any widget), no frame;
     a requested redraw is recorded instead of queued (the list yielded)."""
@@ -491,7 +502,7 @@ def render_at(explorer, settings):
     restore = _snapshot(explorer)
     values = None
     by_hand = False
-    with _held(canvas) as requests:
+    with _held(canvas) as requests, _ahead(explorer):
         try:
             for control, value in settings.items():
                 setattr(control, names[id(control)], value)
@@ -689,7 +700,8 @@ class Prefetcher:
     def frame_drawn(self, pixels):
         """The kernel has drawn a frame of the current values: if the page was sent this very
         picture for them, tell it so and return True (the frame need not be sent); if it was
-        sent a different one, clear both sides (a point moved meanwhile). Prefetch again
+        sent a different one, clear both sides (a point moved meanwhile), or, for an explorer
+        that ``refines`` its pictures, forget that one picture on both sides. Prefetch again
         later."""
         key = self.key()
         crc = self.sent.get(key)
@@ -697,7 +709,14 @@ class Prefetcher:
         if crc is None:
             return False
         if crc != _crc(pixels):
-            self.clear()
+            explorer = self.explorer()
+            if getattr(explorer, "refines", False):
+                # the explorer's own finer picture of the same values (a ray tracer's full
+                # image after its preview): only the picture kept for them is not its first
+                del self.sent[key]
+                self.decoder.send({"type": "drop", "state": self.values()})
+            else:
+                self.clear()
             return False
         self.decoder.send({"type": "same", "state": self.values(), "epoch": self.epoch})
         return True
@@ -765,12 +784,12 @@ class Prefetcher:
             loop.remove_timeout(self.handle)
         self.handle = loop.call_later(delay, self.step)
 
-    def _busy(self):
+    def _busy(self, explorer):
         from .widgets._base import comms_waiting
 
         canvas = self.canvas
         return (comms_waiting() or getattr(canvas, "_course_draw_queued", False)
-                or getattr(canvas, "_png_is_old", False))
+                or getattr(canvas, "_png_is_old", False) or getattr(explorer, "working", False))
 
     def step(self):
         """Draw and send one picture, then come back for the next."""
@@ -778,7 +797,7 @@ class Prefetcher:
         explorer = self.explorer()
         if explorer is None or not self.enabled or self.decoder is None:
             return
-        if self._busy():
+        if self._busy(explorer):
             return self.wake()
         if self.spent >= BUDGET_S or len(self.sent) >= MAX_FRAMES:
             return

@@ -7,6 +7,7 @@ explorer, its widgets and its figure as they were, and send nothing but the pict
 import io
 import json
 import zlib
+from unittest import mock
 
 import ipywidgets as w
 import numpy as np
@@ -232,6 +233,87 @@ def test_a_kernel_frame_is_not_sent_again_when_the_page_holds_it_and_clears_it_i
                                                 "epoch": 0}
     assert prefetch.frame_drawn(255 - frame) is False    # unlike it (a point moved)
     assert prefetch.decoder.messages[-1][0] == {"type": "clear"} and not prefetch.sent
+
+
+def test_a_ray_tracers_full_image_forgets_only_the_preview_kept_for_its_values(monkeypatch):
+    """The ray tracer shows a preview at once and the full image once the sliders rest: the
+    full image is unlike the preview drawn ahead for the same values, yet every other preview
+    kept is still the kernel's first answer for its values. Only that one is forgotten, on
+    both sides; the full image, once kept for the values of the last full image, is drawn
+    ahead for them when they are a step away."""
+    from course_lib.widgets.raytracer import RayTracerExplorer
+
+    explorer = RayTracerExplorer()
+    prefetch = _prefetch.attach(explorer)
+    canvas = explorer.fig.canvas
+    canvas.draw()
+    prefetch.decoder = _Decoder()
+    depth = _control(prefetch, "recursion depth")
+    monkeypatch.setattr(prefetch, "wake", lambda delay=0: None)
+    for _ in range(4):
+        prefetch.step()                              # depth 2 and 4 first, then the others
+    drawn = {tuple(m["state"]) for m, _ in prefetch.decoder.messages}
+    assert len(drawn) == 4
+    depth.value = 4                                  # the student goes to a kept preview
+    canvas.draw()
+    assert explorer.current["preview"]
+    assert prefetch.frame_drawn(np.asarray(canvas.get_renderer().buffer_rgba())) is True
+    explorer.settle()                                # the sliders rest: the full image
+    canvas.draw()
+    assert prefetch.frame_drawn(np.asarray(canvas.get_renderer().buffer_rgba())) is False
+    last, _ = prefetch.decoder.messages[-1]
+    assert last == {"type": "drop", "state": prefetch.values()}
+    assert len(prefetch.sent) == 3                   # the other previews are still kept
+    full_4 = np.asarray(canvas.get_renderer().buffer_rgba()).copy()
+    depth.value = 3                                  # a step away, back to the start
+    canvas.draw()
+    assert explorer.current["preview"]               # (the first full image is not kept)
+    pixels, values = _prefetch.render_at(explorer, {depth: 4})
+    assert values[prefetch.inputs.index((depth, "value"))] == 4
+    assert np.array_equal(pixels, full_4)
+    depth.value = 4                                  # the last full image's values: at once
+    canvas.draw()
+    assert not explorer.current["preview"]
+    assert np.array_equal(pixels, np.asarray(canvas.get_renderer().buffer_rgba()))
+
+
+def test_drawing_ahead_leaves_a_refinement_under_way_alone(monkeypatch):
+    """Pictures drawn ahead while an explorer refines its own (the ray tracer waiting to trace
+    its full image, the distributed ray tracer half way through its samples): each is the
+    picture the student's input would show first, and the refinement goes on untouched, its
+    timer kept and its picture and status the same."""
+    from course_lib.widgets.distributed import DistributedExplorer, State
+    from course_lib.widgets.raytracer import RayTracerExplorer
+
+    armed = []
+
+    class Loop:                                      # the kernel's loop, its timers recorded
+        def call_later(self, delay, callback, *args):
+            handle = mock.Mock()
+            armed.append(handle)
+            return handle
+
+    monkeypatch.setattr("asyncio.get_running_loop", lambda: Loop())
+    tracer = RayTracerExplorer()
+    distributed = DistributedExplorer(State(samples=6))
+    tracer.mirror.value = 0.5                        # a preview; the full image to come
+    distributed.light.value = 0.9                    # the first of 6 samples shown
+    distributed._tick()
+    distributed._tick()                              # ... three shown
+    assert distributed.done == 3 and tracer.pending
+    for explorer, control, value in ((tracer, tracer.depth, 4),
+                                     (distributed, distributed.light, 0.95)):
+        canvas = explorer.fig.canvas
+        canvas.draw()
+        timer = explorer._timer
+        status, done = explorer.status.value, getattr(explorer, "done", None)
+        pixels, _ = _prefetch.render_at(explorer, {control: value})
+        assert explorer._timer is timer and not timer.cancel.called
+        assert explorer.status.value == status and getattr(explorer, "done", None) == done
+        old = control.value
+        live = _live(explorer, control, "value", value)
+        assert np.array_equal(pixels, live), type(explorer).__name__
+        control.value = old
 
 
 def test_the_frame_the_page_holds_is_named_not_sent_and_sent_whole_if_it_asks():

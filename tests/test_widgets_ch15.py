@@ -218,9 +218,23 @@ def test_preview_then_full_image():
     assert ex.state.mirror_reflectivity == 0.3
     from PIL import Image
     import io
-    shown = np.asarray(Image.open(io.BytesIO(ex.png())))
-    assert shown.shape == (raytracer.FULL[1], raytracer.FULL[0], 3)
-    assert np.array_equal(shown, np.round(np.flipud(ex.current["image"]) * 255))
+    from skimage.transform import resize
+    shown = np.asarray(Image.open(io.BytesIO(ex.png()))).astype(float)
+    assert shown.shape == (raytracer.DISPLAY[1], raytracer.DISPLAY[0], 3)
+    assert np.array_equal(shown, ex.frame())                # png() is what the canvas shows
+    # the full image enlarged x 1.5 (skimage's bilinear resize, pixel centres as PIL's)
+    full = np.flipud(ex.current["image"]) * 255
+    expected = resize(full, shown.shape, order=1, mode="edge", anti_aliasing=False)
+    assert np.abs(shown - expected).max() <= 1.5
+    # a preview is shown with big square pixels: each of its pixels a 6 x 6 block
+    ex.mirror.value = 0.35
+    assert ex.pending and ex.current["preview"]
+    blocks = ex.frame().reshape(60, 6, 80, 6, 3).astype(float)
+    assert np.all(blocks == blocks[:, :1, :, :1])
+    assert np.array_equal(blocks[:, 0, :, 0], np.round(np.flipud(ex.current["image"]) * 255))
+    ex.mirror.value = 0.3                         # back to the full image's values: at once
+    assert not ex.pending and not ex.current["preview"]
+    assert np.array_equal(ex.frame(), shown)
 
 
 def test_the_full_image_comes_in_bands_and_an_input_between_two_abandons_it(monkeypatch):
@@ -246,8 +260,14 @@ def test_the_full_image_comes_in_bands_and_an_input_between_two_abandons_it(monk
 
     async def student():
         ex = made["explorer"] = raytracer.RayTracerExplorer(settle_seconds=0.01, band_rows=60)
-        ex.image.observe(lambda _: shown.append((ex.current["preview"], ex.state.max_depth,
-                                                 ex.state.mirror_reflectivity)), "value")
+        show = ex.show_frame
+
+        def recorded(pixels):                # each picture put on the canvas
+            shown.append((ex.current["preview"], ex.state.max_depth,
+                          ex.state.mirror_reflectivity))
+            show(pixels)
+
+        ex.show_frame = recorded
         ex.depth.value = 1
         for _ in range(20000):
             await asyncio.sleep(0.001 if ex.pending else 0)

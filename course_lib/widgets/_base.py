@@ -486,6 +486,18 @@ class Explorer:
     widget = None
     fig = None
     blitter = None
+    #: True while the explorer has work of its own queued on the kernel's event loop (a
+    #: picture refined step by step): nothing is drawn ahead meanwhile (:mod:`course_lib._prefetch`)
+    working = False
+    #: True if the picture an input gives is later replaced by a finer one of the same values
+    #: (a preview, then the full image): a kernel frame unlike the picture drawn ahead for its
+    #: values is that finer picture, not a sign that every picture drawn ahead is stale
+    refines = False
+    #: True while :mod:`course_lib._prefetch` draws the explorer at values the student has not
+    #: chosen (each update is taken back by the next): an update then draws its picture and
+    #: leaves the explorer's own work on the event loop (a settle timer, a refinement), and
+    #: the status lines that report it, alone
+    drawing_ahead = False
 
     def update(self):  # pragma: no cover - every subclass overrides it
         raise NotImplementedError
@@ -558,6 +570,48 @@ class Explorer:
         save(buffer, format="png", dpi=dpi)
         return buffer.getvalue()
 
+    def screen(self, width, height):
+        """A matplotlib canvas of `width` x `height` pixels that shows a picture made by the
+        explorer itself (a ray-traced image, a VTK frame) one pixel for one
+        (:meth:`show_frame`); returns the canvas for the explorer's layout, and it becomes
+        ``self.fig``'s.
+
+        Shown on a canvas rather than an image widget, the pictures take the explorers' own path
+        to the page (pushed, decoded off the browser's main thread: :mod:`course_lib._canvas`)
+        and the page keeps the pictures the kernel draws ahead for the explorer's sliders
+        (:mod:`course_lib._prefetch`): a slider step is shown from the page's own copy,
+        instead of a round trip through the kernel.
+
+        Examples
+        --------
+        >>> explorer = Explorer()
+        >>> canvas = explorer.screen(40, 30)
+        >>> explorer.show_frame(np.zeros((30, 40, 3), np.uint8))
+        >>> explorer.frame().shape, canvas is explorer.fig.canvas
+        ((30, 40, 3), True)
+        """
+        from .. import draw
+
+        dpi = 100 * draw.lecture_scale()        # draw.figure multiplies by the same scale
+        self.fig = draw.figure(figsize=(width / dpi, height / dpi), dpi=100)
+        ax = self.fig.add_axes((0, 0, 1, 1))
+        ax.set_axis_off()
+        self._frame = ax.imshow(np.full((height, width, 3), 255, np.uint8), aspect="auto",
+                                interpolation="nearest", resample=False)
+        canvas = self.fig.canvas
+        if hasattr(canvas, "toolbar_visible"):
+            canvas.toolbar_visible = False          # nothing to pan or zoom in a picture
+        return canvas
+
+    def show_frame(self, pixels):
+        """Show `pixels` ((height, width, 3) uint8, row 0 at the top) on the :meth:`screen`."""
+        self._frame.set_data(pixels)
+        self.fig.canvas.draw_idle()
+
+    def frame(self):
+        """The picture the :meth:`screen` shows, (height, width, 3) uint8."""
+        return np.asarray(self._frame.get_array())
+
     def _repr_mimebundle_(self, include=None, exclude=None):
         from .._prefetch import attach
 
@@ -603,16 +657,10 @@ class PlotterExplorer(Explorer):
         """The current picture as PNG bytes (for readers without a kernel)."""
         return self.picture("png")
 
-    def screen(self):
-        """A matplotlib canvas, the size of the plotter's frames, that shows them in the widget
-        (:meth:`show`); returns the canvas for the explorer's layout, and it becomes
-        ``self.fig``'s.
-
-        Shown on a canvas rather than an image widget, the frames take the explorers' own path
-        to the page (pushed, decoded off the browser's main thread: :mod:`course_lib._canvas`)
-        and the page keeps the pictures the kernel draws ahead for the explorer's sliders
-        (:mod:`course_lib._prefetch`): a slider step is shown from the page's own copy,
-        instead of a round trip through the kernel and VTK.
+    def screen(self, width=None, height=None):
+        """A matplotlib canvas, the size of the plotter's frames unless given, that shows them in
+        the widget (:meth:`show`); returns the canvas for the explorer's layout
+        (:meth:`Explorer.screen`).
 
         Examples
         --------
@@ -621,29 +669,13 @@ class PlotterExplorer(Explorer):
         >>> explorer.frame().shape[:2] == tuple(explorer.plotter.window_size)[::-1]
         True
         """
-        from .. import draw
-
-        width, height = self.plotter.window_size
-        dpi = 100 * draw.lecture_scale()        # draw.figure multiplies by the same scale
-        self.fig = draw.figure(figsize=(width / dpi, height / dpi), dpi=100)
-        ax = self.fig.add_axes((0, 0, 1, 1))
-        ax.set_axis_off()
-        self._frame = ax.imshow(np.full((height, width, 3), 255, np.uint8), aspect="auto",
-                                interpolation="nearest", resample=False)
-        canvas = self.fig.canvas
-        if hasattr(canvas, "toolbar_visible"):
-            canvas.toolbar_visible = False          # nothing to pan or zoom in a picture
-        return canvas
+        default_width, default_height = self.plotter.window_size
+        return super().screen(width or default_width, height or default_height)
 
     def show(self):
         """Render the plotter and show its frame on the :meth:`screen`."""
         self.plotter.render()
-        self._frame.set_data(self.plotter.screenshot(return_img=True))
-        self.fig.canvas.draw_idle()
-
-    def frame(self):
-        """The plotter's frame the screen shows (height, width, 3) uint8."""
-        return np.asarray(self._frame.get_array())
+        self.show_frame(self.plotter.screenshot(return_img=True))
 
 
 def pyvista_faces(triangles):

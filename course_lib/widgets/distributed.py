@@ -9,7 +9,10 @@ right during the exposure (``shutter``). The picture is rendered by
 per pixel at once (a noisy image, tens of milliseconds at :data:`SIZE` pixels), then, while the
 controls rest, adds one more sample per pixel every :data:`STEP_SECONDS` until the chosen
 number is reached. Without a running event loop (a script, a test) the remaining samples wait
-for :meth:`DistributedExplorer.settle`.
+for :meth:`DistributedExplorer.settle`. Coming back to the values of the last finished picture
+shows it again at once. The picture is shown on a matplotlib canvas one pixel for one, so its
+frames take the explorers' own path to the page and, while the explorer rests, the first
+samples of the next slider steps are drawn ahead (:mod:`course_lib._prefetch`).
 
 The panel on the right shows the samples of the centre pixel in the domain chosen with the
 buttons: the pixel's area, the light's disk, the reflection lobe (seen along its axis), the
@@ -17,7 +20,7 @@ lens aperture, or the shutter interval.
 """
 import asyncio
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -25,7 +28,7 @@ from .. import raytracing as rt
 from .._validate import as_choice
 from . import _style
 from ._base import Explorer, align, beside, bind, panel, slider
-from .raytracer import _png
+from .raytracer import _pixels, _png
 
 __all__ = ["DOMAINS", "DistributedExplorer", "SIZE", "State", "domain_samples", "scene"]
 
@@ -193,9 +196,18 @@ def _text(state, n):
             f"{_WHAT[state.domain]}.")
 
 
+def _begin(state):
+    """The progressive render of `state` (one sample per pixel per step) and its panel."""
+    base, camera = _camera()
+    frames = rt.progressive(base, camera, batch=1, batches=int(state.samples), seed=0,
+                            **_options(state))
+    points, kind = domain_samples(state)
+    return frames, _paint_panel(points, kind, state)
+
+
 def _compose(image, panel_rgb):
-    """The picture shown, row 0 at the bottom (as :func:`_png` wants it): the render enlarged
-    beside the panel."""
+    """The picture shown, row 0 at the bottom (as :func:`._pixels` wants it): the render
+    enlarged beside the panel."""
     top = np.flipud(image)
     big = np.repeat(np.repeat(top, SCALE, axis=0), SCALE, axis=1)
     gap = np.ones((big.shape[0], 8, 3))
@@ -215,12 +227,19 @@ class DistributedExplorer(Explorer):
     >>> explorer.settle()
     >>> explorer.done, explorer.pending
     (8, False)
+    >>> explorer.aperture.value = 0.1          # back to a finished picture's values? no
+    >>> explorer.done
+    1
+    >>> explorer.aperture.value = 0.2; explorer.done         # yes: shown again at once
+    8
     """
 
     summary = ("Distributed ray tracing explorer (interactive): samples per pixel, disk light "
                "radius (soft shadows), gloss exponent, lens aperture and focal distance (depth "
                "of field), shutter (motion blur); the image refines sample by sample and a "
                "panel shows the samples of one pixel in the chosen domain.")
+
+    refines = True                  # one sample per pixel, then more
 
     def __init__(self, state=None, step_seconds=STEP_SECONDS):
         import ipywidgets as w
@@ -231,10 +250,12 @@ class DistributedExplorer(Explorer):
         self._frames = None
         self.done = 0
         self.pending = False
+        self._live = None               # (state, image, panel, text) of the picture shown
+        self._finished = None           # the same of the last finished picture, with its
+                                        # samples, its last step's time and its status line
         self.last_ms = 0.0
         st = self.state
-        self.image = w.Image(format="png",
-                             layout=w.Layout(width=f"{SIZE[0] * SCALE + 8 + INSET}px"))
+        canvas = self.screen(SIZE[0] * SCALE + 8 + INSET, INSET)
         self.samples = slider("samples / pixel", st.samples, 1, 64, 1, kind=w.IntSlider)
         self.light = slider("light radius", st.light_radius, 0.0, MAX_LIGHT, 0.05)
         self.gloss = slider("gloss exponent", st.gloss, 1.0, 1000.0, 1.0)
@@ -251,7 +272,7 @@ class DistributedExplorer(Explorer):
         align([self.samples, self.light, self.gloss, self.aperture, self.focus, self.shutter])
         controls = w.VBox([self.samples, self.light, self.gloss, self.aperture, self.focus,
                            self.shutter, self.status])
-        self.widget = w.VBox([beside(self.image, controls), self.domain, self.info])
+        self.widget = w.VBox([beside(canvas, controls), self.domain, self.info])
         self._restart()
         self.settle()
 
@@ -260,11 +281,7 @@ class DistributedExplorer(Explorer):
         if self._timer is not None:
             self._timer.cancel()
             self._timer = None
-        base, camera = _camera()
-        self._frames = rt.progressive(base, camera, batch=1, batches=int(self.state.samples),
-                                      seed=0, **_options(self.state))
-        points, kind = domain_samples(self.state)
-        self._panel = _paint_panel(points, kind, self.state)
+        self._frames, self._panel = _begin(self.state)
         self.done = 0
         self.current = None
         self._step()
@@ -279,11 +296,14 @@ class DistributedExplorer(Explorer):
             return False
         self.done += 1
         self.pending = self.done < int(self.state.samples)
-        self.image.value = _png(np.clip(_compose(self.current, self._panel), 0, 1))
+        self.show_frame(_pixels(_compose(self.current, self._panel)))
         self.last_ms = 1e3 * (time.perf_counter() - start)
         self.info.value = _text(self.state, self.done)
         self.status.value = (f"<i>{self.done}/{int(self.state.samples)} samples, last step "
                              f"{self.last_ms:.0f} ms</i>")
+        self._live = (replace(self.state), self.current, self._panel, self.info.value)
+        if not self.pending:
+            self._finished = self._live + (self.done, self.last_ms, self.status.value)
         return True
 
     def _tick(self):
@@ -299,7 +319,32 @@ class DistributedExplorer(Explorer):
         self._timer = loop.call_later(self.step_seconds, self._tick)
 
     def update(self):
-        """A control changed: show one sample per pixel now and refine while the controls rest."""
+        """A control changed: show one sample per pixel now and refine while the controls rest
+        (or the last finished picture at once, if its values are back). Drawn ahead
+        (:attr:`drawing_ahead`), only the picture and its text: the refinement under way is
+        left alone, and shown again when its values come back."""
+        if self.drawing_ahead:
+            for kept in (self._live, self._finished):
+                if kept is not None and kept[0] == self.state:
+                    _, image, panel, info = kept[:4]
+                    break
+            else:
+                frames, panel = _begin(self.state)
+                image, info = next(frames), _text(self.state, 1)
+            self.show_frame(_pixels(_compose(image, panel)))
+            self.info.value = info
+            return
+        if self._finished is not None and self._finished[0] == self.state:
+            if self._timer is not None:
+                self._timer.cancel()
+                self._timer = None
+            (_, self.current, self._panel, self.info.value, self.done, self.last_ms,
+             self.status.value) = self._finished
+            self._live = self._finished[:4]
+            self._frames = None
+            self.pending = False
+            self.show_frame(_pixels(_compose(self.current, self._panel)))
+            return
         self._restart()
         if self.pending:
             self._schedule()
@@ -314,5 +359,6 @@ class DistributedExplorer(Explorer):
         self.pending = False
 
     def png(self, dpi=None):
-        """The current picture as PNG bytes (for readers without a kernel)."""
-        return self.image.value
+        """The current picture as PNG bytes, as the canvas shows it (for readers without a
+        kernel)."""
+        return _png(self.frame())

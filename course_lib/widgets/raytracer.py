@@ -14,9 +14,13 @@ pixels, 1/16 of the rays, well under 100 ms), shown with big square pixels; once
 has been still for :data:`SETTLE_SECONDS` the **full image** (:data:`FULL`) replaces it. The
 full image is traced :data:`BAND_ROWS` rows at a time (:func:`course_lib.raytracing.render_bands`)
 on the kernel's event loop, so a slider moved while it is being made is answered after at most
-one band (tens of milliseconds), not after the whole image: the rest of it is abandoned. The
-picture is shown as an image widget (like :mod:`course_lib.widgets.surface`), so it needs no
-matplotlib canvas and costs one PNG encoding per update.
+one band (tens of milliseconds), not after the whole image: the rest of it is abandoned. Coming
+back to the values of the last full image shows that image again at once.
+
+The picture is shown on a matplotlib canvas one pixel for one (:meth:`Explorer.screen`), at
+:data:`DISPLAY` pixels: its frames take the explorers' own path to the page, and while the
+explorer rests the kernel draws ahead the previews of the next slider steps, which the page
+shows without waiting for the kernel (:mod:`course_lib._prefetch`).
 """
 import asyncio
 import io
@@ -29,12 +33,12 @@ from .. import raytracing as rt
 from . import _style
 from ._base import Explorer, align, beside, bind, checkbox, panel, slider
 
-__all__ = ["BAND_ROWS", "FULL", "PREVIEW", "RayTracerExplorer", "State", "TARGET",
+__all__ = ["BAND_ROWS", "DISPLAY", "FULL", "PREVIEW", "RayTracerExplorer", "State", "TARGET",
            "build_scene", "make_camera", "scene", "scene_bands"]
 
 PREVIEW = (80, 60)          # width, height of the preview while a slider moves
 FULL = (320, 240)           # width, height of the full image
-DISPLAY_WIDTH = 480         # pixels on screen
+DISPLAY = (480, 360)        # width, height on screen: the preview x 6, the full image x 1.5
 SETTLE_SECONDS = 0.35       # a slider still this long counts as released
 BAND_ROWS = 8               # full-image rows traced between two looks at the student's input
 TARGET = np.array([0.0, 0.8, -0.2])
@@ -175,13 +179,26 @@ def _result(state, preview, image, counts, camera):
             "text": text}
 
 
-def _png(image, scale=1):
-    """PNG bytes of an image stored row 0 at the bottom, each pixel `scale` x `scale`."""
+def _pixels(image, size=None):
+    """An image stored row 0 at the bottom as uint8 pixels row 0 at the top, resized to `size`
+    (width, height): by whole multiples, each pixel a square block (a preview's big pixels),
+    otherwise bilinearly."""
     from PIL import Image
 
-    pixels = np.flipud(np.round(image * 255).astype(np.uint8))
-    if scale > 1:
-        pixels = np.repeat(np.repeat(pixels, scale, axis=0), scale, axis=1)
+    pixels = np.flipud(np.round(np.clip(image, 0, 1) * 255).astype(np.uint8))
+    if size is None or tuple(size) == pixels.shape[1::-1]:
+        return np.ascontiguousarray(pixels)
+    width, height = size
+    sx, sy = width / pixels.shape[1], height / pixels.shape[0]
+    if sx == sy == int(sx):
+        return np.repeat(np.repeat(pixels, int(sx), axis=0), int(sx), axis=1)
+    return np.asarray(Image.fromarray(pixels).resize((width, height), Image.BILINEAR))
+
+
+def _png(pixels):
+    """PNG bytes of uint8 pixels."""
+    from PIL import Image
+
     buffer = io.BytesIO()
     Image.fromarray(pixels).save(buffer, format="png", compress_level=1)
     return buffer.getvalue()
@@ -200,16 +217,24 @@ class RayTracerExplorer(Explorer):
     --------
     >>> explorer = RayTracerExplorer()
     >>> explorer.depth.value = 1                    # a student's slider move
-    >>> explorer.current["image"].shape, explorer.pending
-    ((60, 80, 3), True)
+    >>> explorer.current["image"].shape, explorer.pending, explorer.frame().shape
+    ((60, 80, 3), True, (360, 480, 3))
     >>> explorer.settle()
     >>> explorer.current["image"].shape, explorer.pending
     ((240, 320, 3), False)
+    >>> explorer.depth.value = 3                    # back: no full image of depth 3 kept
+    >>> explorer.current["preview"], explorer.pending
+    (True, True)
+    >>> explorer.depth.value = 1                    # back to the last full image's values
+    >>> explorer.current["preview"], explorer.pending
+    (False, False)
     """
 
     summary = ("Ray tracer explorer (interactive): Whitted's spheres — recursion depth, shadow "
                "rays on/off, mirror k_r, glass k_t and refractive index, floor k_r, camera "
                "orbit; a low-resolution preview while sliding, the full image on release.")
+
+    refines = True                  # a preview, then the full image
 
     def __init__(self, state=None, settle_seconds=SETTLE_SECONDS, band_rows=BAND_ROWS):
         import ipywidgets as w
@@ -221,8 +246,9 @@ class RayTracerExplorer(Explorer):
         self.bands_traced = 0           # bands of full images traced (abandoned ones too)
         self._timer = None
         self._bands = None
+        self._full = None               # (state, scene) of the last full image shown
         self.last_ms = 0.0
-        self.image = w.Image(format="png", layout=w.Layout(width=f"{DISPLAY_WIDTH}px"))
+        canvas = self.screen(*DISPLAY)
         st = self.state
         options = {}
         self.depth = slider("recursion depth", st.max_depth, 0, 6, 1, kind=w.IntSlider, **options)
@@ -245,21 +271,36 @@ class RayTracerExplorer(Explorer):
                                         "render full image", "__")))        # and the icon
         self.full_button.on_click(lambda _: self.settle())
         self.status = w.HTML()
-        self.info = panel(width=f"{DISPLAY_WIDTH}px")
+        self.info = panel(width=f"{DISPLAY[0]}px")
         align([self.depth, self.mirror, self.glass, self.ior, self.floor, self.azimuth,
                self.elevation, self.distance])
         controls = w.VBox([self.depth, self.shadows, self.mirror, self.glass, self.ior,
                            self.floor, self.azimuth, self.elevation, self.distance,
                            self.full_button, self.status])
-        self.widget = w.VBox([beside(self.image, controls), self.info])
+        self.widget = w.VBox([beside(canvas, controls), self.info])
         self.current = None
         self._render(preview=False)
 
+    @property
+    def working(self):
+        """The full image is being traced, band by band, on the event loop."""
+        return self._bands is not None
+
     def update(self):
-        """A slider moved: show the preview now, and the full image once the slider rests."""
-        self._render(preview=True)
-        self.pending = True
-        self._schedule_full()
+        """A slider moved: show the preview now, and the full image once the slider rests (at
+        once if it is the last full image's). Drawn ahead (:attr:`drawing_ahead`), only the
+        picture and its text."""
+        ahead = self.drawing_ahead
+        if self._full is not None and self._full[0] == self.state:
+            if not ahead:
+                self._cancel()
+                self.pending = False
+            self._show(self._full[1], self.last_ms, status=not ahead)
+            return
+        self._render(preview=True, status=not ahead)
+        if not ahead:
+            self.pending = True
+            self._schedule_full()
 
     def _schedule_full(self):
         self._cancel()
@@ -305,21 +346,25 @@ class RayTracerExplorer(Explorer):
         self._render(preview=False)
         self.pending = False
 
-    def _render(self, preview):
+    def _render(self, preview, status=True):
         start = time.perf_counter()
         s = scene(self.state, preview)
-        self._show(s, 1e3 * (time.perf_counter() - start))
+        self._show(s, 1e3 * (time.perf_counter() - start), status)
 
-    def _show(self, s, ms):
-        scale = FULL[0] // PREVIEW[0] if s["preview"] else 1
+    def _show(self, s, ms, status=True):
         self.current = s
-        self.last_ms = ms
-        self.image.value = _png(s["image"], scale)
+        self.show_frame(_pixels(s["image"], DISPLAY))
         self.info.value = s["text"]
+        if not status:
+            return
+        self.last_ms = ms
+        if not s["preview"]:
+            self._full = (replace(self.state), s)
         self.status.value = (f"<i>preview {PREVIEW[0]}×{PREVIEW[1]} in {ms:.0f} ms — "
                              "the full image follows when the slider rests</i>"
                              if s["preview"] else f"<i>full image {FULL[0]}×{FULL[1]}</i>")
 
     def png(self, dpi=None):
-        """The current picture as PNG bytes (for readers without a kernel)."""
-        return self.image.value
+        """The current picture as PNG bytes, as the canvas shows it (for readers without a
+        kernel)."""
+        return _png(self.frame())
