@@ -670,6 +670,7 @@ class Prefetcher:
             last, self._turned_from = self._turned_from, now
             if last is not None and now != last:
                 self.heading = (self.turning, np.subtract(now, last, dtype=float))
+                self.spent = 0.0           # an input, as a slider's change is
         elif content.get("type") == "button_release":
             if self.turning is not None:
                 self.focus, self.turning = self.turning, None

@@ -392,6 +392,23 @@ def test_a_view_being_turned_is_drawn_ahead_the_way_it_turns(monkeypatch):
     assert lower >= 2.5 * higher, ahead
 
 
+def test_each_move_of_a_turn_renews_the_drawing_budget_as_a_sliders_change_does(monkeypatch):
+    """A turn held for long (the button down, the mouse moving now and then) goes on being
+    drawn ahead: each move that turns the view is an input, and the budget of drawing after
+    an input starts again (a loaded machine spent it before the next move, and the views
+    around the new one never came)."""
+    explorer, prefetch, view, _, press = _gimbal(monkeypatch)
+    canvas = explorer.fig.canvas
+    prefetch._mouse(canvas, press, [])
+    prefetch.spent = _prefetch.BUDGET_S                # spent while the mouse rested
+    prefetch._mouse(canvas, {"type": "motion_notify"}, [])
+    assert prefetch.spent == _prefetch.BUDGET_S        # a move that turned nothing
+    elev, azim = view.value
+    view.value = (elev, azim - 1)                      # the axes' own handler turned it
+    prefetch._mouse(canvas, {"type": "motion_notify"}, [])
+    assert prefetch.spent == 0.0
+
+
 def test_a_kernel_frame_carries_the_values_it_shows_once_a_page_keeps_pictures():
     explorer, prefetch = _bezier()
     canvas = explorer.fig.canvas

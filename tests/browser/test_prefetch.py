@@ -295,8 +295,9 @@ def test_a_3d_view_turned_by_the_mouse_is_answered_by_kept_pictures_and_the_kern
     elev, azim = start["value"]
     for k, turn in enumerate((1.2, 3.3, -2.2)):       # degrees to the right (azimuth falls)
         # while the button is held and the mouse rests, the kernel draws the next views ahead
-        # (on a loaded machine a view can take 0.1 s): the turn below reaches one of them
-        _holds_turns(page, ident, 5)
+        # (on a loaded machine a view can take 0.1 s): the turn below (3.3 degrees at most, so
+        # within 4 degrees on the whole-pixel mouse) reaches one of them
+        _holds_turns(page, ident, 4)
         before = page.evaluate(_VIEW, ident)
         x += turn * degree
         page.mouse.move(x, y)
@@ -325,6 +326,11 @@ def test_a_3d_view_turned_by_the_mouse_is_answered_by_kept_pictures_and_the_kern
     assert notebook.console_errors == []
 
 
+# The toolbar's chosen action ('pan', 'zoom' or '') as the page's canvas model has it
+_ACTION = "(id) => { const t = (%s)(id).canvas.get('toolbar'); " \
+          "return t && t.get ? t.get('_current_action') : null; }" % _KEPT
+
+
 def test_with_the_toolbars_pan_chosen_a_drag_on_the_3d_axes_predicts_no_turn(gimbal):
     """The toolbar's pan (or zoom) makes a drag on the axes pan it: the kernel turns nothing,
     so the page must neither turn its copy of the view nor paint a kept view for the drag."""
@@ -347,8 +353,13 @@ def test_with_the_toolbars_pan_chosen_a_drag_on_the_3d_axes_predicts_no_turn(gim
     deadline = time.monotonic() + 30
     while kernel.run(mode).strip() != "PAN" and time.monotonic() < deadline:
         time.sleep(0.2)
+    # and the page's copy of the toolbar, which the page reads at the press, has heard of it
+    # (the kernel sets it after the click, and the page only when that change comes back)
+    while page.evaluate(_ACTION, ident) != "pan" and time.monotonic() < deadline:
+        time.sleep(0.1)
     try:
         assert kernel.run(mode).strip() == "PAN"
+        assert page.evaluate(_ACTION, ident) == "pan"
         page.mouse.move(x, y)
         page.mouse.down()
         for k in range(1, 11):                        # 20 degrees' worth of a turn
@@ -364,4 +375,54 @@ def test_with_the_toolbars_pan_chosen_a_drag_on_the_3d_axes_predicts_no_turn(gim
         pan.click()
         while kernel.run(mode).strip() != "None" and time.monotonic() < deadline + 30:
             time.sleep(0.2)
+    assert notebook.console_errors == []
+
+
+@pytest.fixture(scope="module")
+def ray_tracer(lab, browser):
+    yield from _opened(lab, browser, "notebooks/ch15_ray_tracing.ipynb", "RayTracerExplorer")
+
+
+_HAS = "([id, key]) => (%s)(id).entries.has(key)" % _KEPT
+# Marks every picture the page keeps now, and returns their values
+_MARK = "(id) => { const p = (%s)(id); for (const e of p.entries.values()) e.marked = true; " \
+        "return [...p.entries.keys()]; }" % _KEPT
+# The values of the marked pictures still kept (not forgotten, nor received again since)
+_MARKED = "(id) => [...(%s)(id).entries].filter(([k, e]) => e.marked).map(([k]) => k)" % _KEPT
+
+
+def test_a_ray_tracers_full_image_replaces_only_the_preview_kept_for_its_values(ray_tracer):
+    """A key on the ray tracer's depth slider paints the preview kept for the new depth at
+    once; the kernel's preview is that picture; then the full image comes, and the page shows
+    it and forgets the preview kept for those values (the kernel said "drop"), but not the
+    previews kept for the other values."""
+    notebook, kernel, view, ident = ray_tracer
+    page = notebook.page
+    stats = _wait(page, ident, lambda s: s["entries"] >= 4)
+    assert stats["entries"] >= 4, f"no previews kept ahead: {stats}"
+    cell = _cell_of(kernel, "RayTracerExplorer")
+    slider = view.locator(".widget-slider").first
+    slider.locator(".noUi-handle").first.focus()
+    before = page.evaluate(_STATS, ident)
+    kept = page.evaluate(_MARK, ident)
+    page.keyboard.press("ArrowRight")
+    after = page.evaluate(_STATS, ident)
+    key = after["current"]
+    assert key in kept
+    assert after["shown"] == before["shown"] + 1, (before, after)     # painted in the handler
+    # the kernel's full image, traced once the slider has rested
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and kernel.run(
+            f"print(Out[{cell}].pending or Out[{cell}].current['preview'])").strip() != "False":
+        time.sleep(0.2)
+    steady = _steady(page, ident)
+    assert steady["kernel"] == key == steady["current"], steady
+    assert steady["same"] > before["same"], (before, steady)    # its preview: the kept one
+    assert not page.evaluate(_HAS, [ident, key]), "the preview kept for the full image's " \
+                                                   "values is still kept"
+    # every other picture kept before the key is still kept, the very same (not forgotten
+    # and sent again)
+    assert sorted(page.evaluate(_MARKED, ident)) == sorted(k for k in kept if k != key)
+    got = page.evaluate(_COMPARE, ident)
+    assert got["sameValues"] and got["kept"] is None and got["shown"] == 0, got
     assert notebook.console_errors == []
