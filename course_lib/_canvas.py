@@ -71,6 +71,10 @@ def _kernel_loop():
     return getattr(kernel_module.Kernel.instance(), "io_loop", None)
 
 
+#: Seconds without a new input before the kernel draws values whose picture the page holds.
+HELD_PAUSE_S = 0.15
+
+
 def _push_frames(canvas):
     """Make ``canvas.draw_idle()`` draw the figure and send the frame itself, once the
     message being handled is done, instead of asking the browser to ask for it.
@@ -81,10 +85,18 @@ def _push_frames(canvas):
     explorer that changes its axes). Here the draw is queued on the kernel's event loop behind
     the messages already waiting, so several ``draw_idle`` calls (and several merged inputs)
     give one frame. Until the browser has shown the canvas (its "initialized" message), and
-    outside a kernel, ``draw_idle`` is left as it was."""
+    outside a kernel, ``draw_idle`` is left as it was.
+
+    A draw of values whose picture the page holds (:meth:`course_lib._prefetch.Prefetcher.holds`:
+    drawn ahead and sent, so the page painted it when its controls got there) is put off until
+    the inputs have paused for :data:`HELD_PAUSE_S`: while a slider is dragged through kept
+    pictures the kernel updates its model at every input but leaves the two cores to the
+    browser, and draws (and checks against the kept picture) only where the drag rests. A
+    draw of values not held is queued at once, and takes the put-off one with it."""
     draw_idle = canvas.draw_idle
     canvas._course_shown = False
     canvas._course_draw_queued = False
+    canvas._course_deferred = None          # the timer of a draw put off (see HELD_PAUSE_S)
 
     def seen(widget, content, buffers):
         if _initialized(content):
@@ -94,13 +106,31 @@ def _push_frames(canvas):
         canvas._course_draw_queued = False
         canvas.draw()
 
+    def queue(loop):
+        if canvas._course_deferred is not None:
+            loop.remove_timeout(canvas._course_deferred)
+            canvas._course_deferred = None
+        if not canvas._course_draw_queued:
+            canvas._course_draw_queued = True
+            loop.add_callback(draw_now)
+
+    def deferred(loop):
+        canvas._course_deferred = None
+        queue(loop)
+
     def push():
         loop = _kernel_loop()
         if loop is None or not canvas._course_shown:
             return draw_idle()
-        if not canvas._course_draw_queued:
-            canvas._course_draw_queued = True
-            loop.add_callback(draw_now)
+        prefetch = getattr(canvas, "_course_prefetch", None)
+        if prefetch is not None and prefetch.holds() and not canvas._course_draw_queued:
+            # the page has painted its own copy of this picture: draw (and check) it once
+            # the inputs pause, not at every one of a drag
+            if canvas._course_deferred is not None:
+                loop.remove_timeout(canvas._course_deferred)
+            canvas._course_deferred = loop.call_later(HELD_PAUSE_S, deferred, loop)
+            return None
+        queue(loop)
         return None
 
     canvas.on_msg(seen)

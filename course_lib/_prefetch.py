@@ -630,6 +630,10 @@ class Prefetcher:
     def key(self, values=None):
         return tuple(_canon(v) for v in (self.values() if values is None else values))
 
+    def holds(self):
+        """Whether the page was sent the picture of the current values (and keeps it)."""
+        return self.decoder is not None and self.key() in self.sent
+
     def ready(self, decoder):
         """A page keeps this explorer's pictures from now on (it has none yet)."""
         self.decoder = decoder
@@ -664,6 +668,10 @@ class Prefetcher:
                 self.spent = 0.0
                 self._turned_from = self.turning.value
                 self.wake()                # no frame follows a press: nothing else wakes it
+            else:
+                # the page forgot its pictures at the press: none is held while the mouse
+                # may move what the values do not show (every frame of a drag is drawn now)
+                self.sent.clear()
         elif content.get("type") == "motion_notify" and self.turning is not None:
             # (after the axes' own handler: ipympl's runs first) the way the view turns
             now = self.turning.value
@@ -790,6 +798,7 @@ class Prefetcher:
 
         canvas = self.canvas
         return (comms_waiting() or getattr(canvas, "_course_draw_queued", False)
+                or getattr(canvas, "_course_deferred", None) is not None
                 or getattr(canvas, "_png_is_old", False) or getattr(explorer, "working", False))
 
     def step(self):

@@ -316,6 +316,69 @@ def test_drawing_ahead_leaves_a_refinement_under_way_alone(monkeypatch):
         control.value = old
 
 
+def test_a_draw_of_values_the_page_holds_waits_for_the_inputs_to_pause(monkeypatch):
+    """While a slider is dragged through pictures the page keeps, the kernel updates its model
+    at each input but draws only once the inputs pause (then it checks the kept picture, as
+    ever); a value the page does not hold is drawn at once, and takes the put-off draw with
+    it; nothing is drawn ahead while a draw is put off; and a press on the figure (a point
+    about to be dragged) makes nothing held, so that every frame of the drag is drawn."""
+    from course_lib import _canvas
+
+    class Loop:                                     # the kernel's loop, run by hand
+        def __init__(self):
+            self.timers, self.callbacks, self.removed = [], [], []
+
+        def call_later(self, delay, callback, *args):
+            self.timers.append((delay, callback, args))
+            return len(self.timers) - 1
+
+        def remove_timeout(self, handle):
+            self.removed.append(handle)
+
+        def add_callback(self, callback):
+            self.callbacks.append(callback)
+
+    loop = Loop()
+    monkeypatch.setattr(_canvas, "_kernel_loop", lambda: loop)
+    explorer, prefetch = _bezier()
+    canvas = explorer.fig.canvas
+    canvas._course_shown = True
+    monkeypatch.setattr(prefetch, "wake", lambda delay=0: None)
+    t = _control(prefetch, "t")
+    prefetch.step()
+    prefetch.step()                                  # t = 0.39 and 0.41 drawn ahead, sent
+    drawn = []
+    monkeypatch.setattr(canvas, "draw", lambda: drawn.append(t.value))
+
+    def move(value):                 # a slider's input, whose update asks for a whole draw
+        t.value = value
+        canvas.draw_idle()
+
+    move(0.39)                                       # held: its draw is put off
+    assert prefetch.holds()
+    assert loop.callbacks == [] and canvas._course_deferred == 0
+    assert loop.timers[0][0] == _canvas.HELD_PAUSE_S
+    assert prefetch._busy(explorer)                  # nothing drawn ahead meanwhile
+    move(0.41)                                       # held too: put off again, from now
+    assert loop.removed == [0] and canvas._course_deferred == 1 and loop.callbacks == []
+    move(0.45)                                       # not held: drawn at once
+    assert not prefetch.holds()
+    assert loop.removed == [0, 1] and canvas._course_deferred is None
+    assert len(loop.callbacks) == 1
+    loop.callbacks.pop()()
+    assert drawn == [0.45]
+    move(0.41)
+    _, callback, args = loop.timers[-1]
+    callback(*args)                                  # the inputs paused: drawn now
+    loop.callbacks.pop()()
+    assert drawn == [0.45, 0.41] and canvas._course_deferred is None
+    # a press on the figure but off any 3D axes: a point may move, nothing is held
+    prefetch._mouse(canvas, {"type": "button_press", "button": 0, "x": 5, "y": 5}, [])
+    assert not prefetch.holds()
+    move(0.39)
+    assert len(loop.callbacks) == 1                  # drawn at once
+
+
 def test_the_frame_the_page_holds_is_named_not_sent_and_sent_whole_if_it_asks():
     explorer, prefetch = _bezier()
     canvas = explorer.fig.canvas

@@ -210,6 +210,13 @@ def test_the_mouse_on_the_figure_forgets_the_kept_pictures_until_new_ones_come(b
     stats = _wait(page, ident, lambda s: not s["pressed"] and s["entries"] >= 2)
     assert stats["need"] >= 1 and stats["entries"] >= 2, stats
     # the new pictures show the moved point: the next step's kept picture is the kernel's
+    # (once the kernel has drawn it: the pictures kept first may lie the other way, where t
+    # moved last)
+    t = _t_index(kernel)
+    deadline = time.monotonic() + 30
+    while page.evaluate(_AHEAD, [ident, t, [1]]) == [None]:
+        assert time.monotonic() < deadline, "the picture one step right never came"
+        time.sleep(0.1)
     slider = view.locator(".widget-slider").first
     slider.locator(".noUi-handle").first.focus()
     page.keyboard.press("ArrowRight")
