@@ -28,7 +28,7 @@ from .. import raytracing as rt
 from .._validate import as_choice
 from . import _style
 from ._base import Explorer, align, beside, bind, panel, slider
-from .raytracer import _pixels, _png
+from .raytracer import _on_screen, _png
 
 __all__ = ["DOMAINS", "DistributedExplorer", "SIZE", "State", "domain_samples", "scene"]
 
@@ -206,7 +206,7 @@ def _begin(state):
 
 
 def _compose(image, panel_rgb):
-    """The picture shown, row 0 at the bottom (as :func:`._pixels` wants it): the render
+    """The picture shown, row 0 at the bottom (as :func:`._on_screen` wants it): the render
     enlarged beside the panel."""
     top = np.flipud(image)
     big = np.repeat(np.repeat(top, SCALE, axis=0), SCALE, axis=1)
@@ -296,7 +296,7 @@ class DistributedExplorer(Explorer):
             return False
         self.done += 1
         self.pending = self.done < int(self.state.samples)
-        self.show_frame(_pixels(_compose(self.current, self._panel)))
+        self.show_frame(_on_screen(_compose(self.current, self._panel)))
         self.last_ms = 1e3 * (time.perf_counter() - start)
         self.info.value = _text(self.state, self.done)
         self.status.value = (f"<i>{self.done}/{int(self.state.samples)} samples, last step "
@@ -331,7 +331,7 @@ class DistributedExplorer(Explorer):
             else:
                 frames, panel = _begin(self.state)
                 image, info = next(frames), _text(self.state, 1)
-            self.show_frame(_pixels(_compose(image, panel)))
+            self.show_frame(_on_screen(_compose(image, panel)))
             self.info.value = info
             return
         if self._finished is not None and self._finished[0] == self.state:
@@ -343,7 +343,7 @@ class DistributedExplorer(Explorer):
             self._live = self._finished[:4]
             self._frames = None
             self.pending = False
-            self.show_frame(_pixels(_compose(self.current, self._panel)))
+            self.show_frame(_on_screen(_compose(self.current, self._panel)))
             return
         self._restart()
         if self.pending:

@@ -179,7 +179,7 @@ def _result(state, preview, image, counts, camera):
             "text": text}
 
 
-def _pixels(image, size=None):
+def _on_screen(image, size=None):
     """An image stored row 0 at the bottom as uint8 pixels row 0 at the top, resized to `size`
     (width, height): by whole multiples, each pixel a square block (a preview's big pixels),
     otherwise bilinearly."""
@@ -353,7 +353,7 @@ class RayTracerExplorer(Explorer):
 
     def _show(self, s, ms, status=True):
         self.current = s
-        self.show_frame(_pixels(s["image"], DISPLAY))
+        self.show_frame(_on_screen(s["image"], DISPLAY))
         self.info.value = s["text"]
         if not status:
             return
