@@ -106,10 +106,13 @@ def _push_frames(canvas):
         canvas._course_draw_queued = False
         canvas.draw()
 
-    def queue(loop):
+    def undefer(loop):
         if canvas._course_deferred is not None:
             loop.remove_timeout(canvas._course_deferred)
             canvas._course_deferred = None
+
+    def queue(loop):
+        undefer(loop)
         if not canvas._course_draw_queued:
             canvas._course_draw_queued = True
             loop.add_callback(draw_now)
@@ -126,8 +129,7 @@ def _push_frames(canvas):
         if prefetch is not None and prefetch.holds() and not canvas._course_draw_queued:
             # the page has painted its own copy of this picture: draw (and check) it once
             # the inputs pause, not at every one of a drag
-            if canvas._course_deferred is not None:
-                loop.remove_timeout(canvas._course_deferred)
+            undefer(loop)
             canvas._course_deferred = loop.call_later(HELD_PAUSE_S, deferred, loop)
             return None
         queue(loop)
