@@ -710,13 +710,14 @@ class Prefetcher:
         """The kernel has drawn a frame of the current values: if the page was sent this very
         picture for them, tell it so and return True (the frame need not be sent); if it was
         sent a different one, clear both sides (a point moved meanwhile), or, for an explorer
-        that ``refines`` its pictures, forget that one picture on both sides. Prefetch again
-        later."""
+        that ``refines`` its pictures, forget that one picture on both sides, and return False
+        (the page may be showing that other picture: the frame must be sent, whole); None if
+        it was sent none. Prefetch again later."""
         key = self.key()
         crc = self.sent.get(key)
         self.wake()
         if crc is None:
-            return False
+            return None
         if crc != _crc(pixels):
             explorer = self.explorer()
             if getattr(explorer, "refines", False):

@@ -225,7 +225,7 @@ def test_a_kernel_frame_is_not_sent_again_when_the_page_holds_it_and_clears_it_i
     prefetch.step()                                  # t = 0.39 drawn ahead
     canvas = explorer.fig.canvas
     t.value = 0.5                                    # values never drawn ahead: sent
-    assert prefetch.frame_drawn(np.asarray(canvas.get_renderer().buffer_rgba())) is False
+    assert prefetch.frame_drawn(np.asarray(canvas.get_renderer().buffer_rgba())) is None
     t.value = 0.39                                   # the student goes to the kept one
     frame = np.asarray(canvas.get_renderer().buffer_rgba())
     assert prefetch.frame_drawn(frame) is True       # the same picture: only named
@@ -259,8 +259,8 @@ def test_a_ray_tracers_full_image_forgets_only_the_preview_kept_for_its_values(m
     assert explorer.current["preview"]
     assert prefetch.frame_drawn(np.asarray(canvas.get_renderer().buffer_rgba())) is True
     explorer.settle()                                # the sliders rest: the full image
-    canvas.draw()
-    assert prefetch.frame_drawn(np.asarray(canvas.get_renderer().buffer_rgba())) is False
+    canvas.draw()                                    # its frame, unlike the preview kept
+    assert prefetch.key() not in prefetch.sent
     last, _ = prefetch.decoder.messages[-1]
     assert last == {"type": "drop", "state": prefetch.values()}
     assert len(prefetch.sent) == 3                   # the other previews are still kept
@@ -510,3 +510,40 @@ def test_values_are_compared_as_the_page_compares_them():
         key(prefetch, [0.3, 3, True, "a", (1, 2.5)])
     assert key(prefetch, [0.3]) != key(prefetch, [0.31])
     assert zlib.crc32(b"") == 0                      # the checksum used for pictures
+
+
+def test_a_frame_the_kernel_sent_before_is_sent_again_whole_if_the_page_keeps_another(
+        monkeypatch):
+    """The page may keep, for the values the kernel now shows, a picture that is not the
+    kernel's: a ray tracer's preview drawn ahead while its cached full image was another's,
+    where the kernel shows the full image of these values again, the very frame it sent last
+    (the inputs between were never drawn: the page held them). That frame must still reach the
+    page, whole, with a "drop" for the kept picture: else the preview stays on the screen
+    (seen in the browser: a slider moved and moved back left 33,534 pixels of the preview)."""
+    from course_lib.widgets.raytracer import RayTracerExplorer
+
+    explorer = RayTracerExplorer()
+    prefetch = _prefetch.attach(explorer)
+    canvas = explorer.fig.canvas
+    canvas.draw()
+    prefetch.decoder = _Decoder()
+    monkeypatch.setattr(prefetch, "wake", lambda delay=0: None)
+    sent = _page_messages(canvas)
+    full = np.asarray(canvas.get_renderer().buffer_rgba()).copy()
+    assert not explorer.current["preview"]
+    # the page was sent another picture for these values (a preview, say), and the
+    # kernel's last frame is the full image
+    prefetch.sent[prefetch.key()] = _prefetch._crc(255 - full)
+    # the kernel draws these values again: its cached full image, the frame it sent last
+    explorer.update()
+    canvas.draw()
+    assert np.array_equal(np.asarray(canvas.get_renderer().buffer_rgba()), full)
+    assert prefetch.decoder.messages[-1][0] == {"type": "drop", "state": prefetch.values()}
+    frames = [m for m in sent if m["type"] == "binary"]
+    assert len(frames) == 1 and "x" not in frames[0], sent          # whole
+    assert frames[0]["state"] == prefetch.values()
+    assert prefetch.key() not in prefetch.sent
+    # and once the page has it, the same frame again is nothing to send
+    explorer.update()
+    canvas.draw()
+    assert len([m for m in sent if m["type"] == "binary"]) == 1, sent
