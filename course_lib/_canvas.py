@@ -378,14 +378,17 @@ function patch(proto) {
 }
 
 // The pictures the kernel drew ahead (course_lib/_prefetch.py), by the values of every control
-function pictures(canvas, controls, views) {
+function pictures(canvas, controls, views, turns) {
   const p = {canvas, entries: new Map(), decoded: [], epoch: 0, need: 0, pressed: false,
              kernelKey: null, copy: null, shown: 0, missed: 0, stale: 0, painted: [],
              displayed: null, same: 0, seq: 0, seen: new Map(), shownSeq: 0,
              // each 3D axes: its box on the canvas (fractions, y down) and its view, [elev,
              // azim], as the kernel last showed it or as the mouse turning it will make it
              views: views.map((v) => ({box: v.box, value: v.view})), turn: null, turnUntil: 0,
-             turned: 0};
+             turned: 0,
+             // each rendered 3D view the mouse turns by moving two sliders: its box and the
+             // indices of its azimuth and elevation sliders among the controls
+             turns, slide: null, slid: 0};
   // when the page was last at each set of values (a count of its changes): a kernel frame
   // for values the page reached after the picture on the screen is newer, and painted even
   // if the page has moved on since (a slider dragged faster than the kernel draws); one for
@@ -581,13 +584,47 @@ function pictures(canvas, controls, views) {
       const navigating = !!(toolbar && toolbar.get && toolbar.get('_current_action'));
       const k = point && event.button === 0 && !navigating
         ? p.views.findIndex((v) => within(v.box, point)) : -1;
+      const s = point && event.button === 0 && !navigating && k < 0
+        ? p.turns.findIndex((t) => within(t.box, point)) : -1;
       if (k >= 0) {
         p.turn = {k, el, from: point, exact: [...p.views[k].value]};
+      } else if (s >= 0) {           // a rendered 3D view, turned by its two sliders
+        const t = p.turns[s];
+        p.slide = {t, el, from: point,
+                   exact: t.controls.map((i) => controls[i][0].get(controls[i][1]))};
       } else {
         p.pressed = true;
         p.forget();
       }
     }).catch(() => {});
+  }, true);
+  // a slider's value nearest to x on its grid (as course_lib._prefetch._on_grid): an
+  // azimuth slider a whole turn wide wraps around, any other stops at its ends
+  const onGrid = (model, x) => {
+    const [min, max, step] = ['min', 'max', 'step'].map((k) => model.get(k));
+    if (max - min >= 360) x = min + ((((x - min) % 360) + 360) % 360);
+    x = Math.min(max, Math.max(min, x));
+    return Number((min + Math.round((x - min) / step) * step).toFixed(10));
+  };
+  document.addEventListener('mousemove', (event) => {
+    const slide = p.slide;
+    if (!slide || !(event.buttons & 1)) return;
+    const point = at(event, slide.el);
+    if (!within(slide.t.box, point)) return;
+    const [w, h] = [slide.t.box[2] - slide.t.box[0], slide.t.box[3] - slide.t.box[1]];
+    // as a 3D axes turns ('azel'): the azimuth against the mouse's x, the elevation with y
+    slide.exact[0] -= ((point[0] - slide.from[0]) / w) * 180;
+    slide.exact[1] += ((point[1] - slide.from[1]) / h) * 180;
+    slide.from = point;
+    slide.t.controls.forEach((i, j) => {
+      const [model, name] = controls[i];
+      const value = onGrid(model, slide.exact[j]);
+      if (model.get(name) !== value) {
+        model.set(name, value);    // the kept picture painted (show), the kernel told
+        model.save_changes();
+        p.slid += 1;
+      }
+    });
   }, true);
   document.addEventListener('mousemove', (event) => {
     const turn = p.turn;
@@ -608,6 +645,7 @@ function pictures(canvas, controls, views) {
   }, true);
   document.addEventListener('mouseup', () => {
     if (p.turn) { p.turn = null; p.turnUntil = performance.now() + 1000; }
+    p.slide = null;
     if (p.pressed) { p.pressed = false; p.need = p.epoch + 1; }
   }, true);
   return p;
@@ -624,10 +662,11 @@ export default {
         patch(Object.getPrototypeOf(canvas));
         const specs = model.get('controls') || [];
         const views = model.get('views') || [];
+        const turns = model.get('turns') || [];
         if (specs.length || views.length) {
           const controls = await Promise.all(specs.map(
             ([id, name]) => manager.get_model(id).then((control) => [control, name])));
-          const kept = pictures(canvas, controls, views);
+          const kept = pictures(canvas, controls, views, turns);
           kept.ids = specs.map(([id]) => id);
           canvas.__course = kept;
           // the browser tests and the benchmark read how often a kept picture was shown
@@ -681,7 +720,8 @@ def frame_decoder(canvas):
     """
     prefetch = getattr(canvas, "_course_prefetch", None)
     return _decoder_class()(canvas=canvas, controls=prefetch.spec() if prefetch else [],
-                            views=prefetch.view_spec() if prefetch else [])
+                            views=prefetch.view_spec() if prefetch else [],
+                            turns=prefetch.turn_spec() if prefetch else [])
 
 
 _DECODER_CLASS = None
@@ -702,6 +742,9 @@ def _decoder_class():
             controls = traitlets.List().tag(sync=True)
             #: each 3D axes' place and view (:meth:`course_lib._prefetch.Prefetcher.view_spec`)
             views = traitlets.List().tag(sync=True)
+            #: each rendered view turned by two sliders
+            #: (:meth:`course_lib._prefetch.Prefetcher.turn_spec`)
+            turns = traitlets.List().tag(sync=True)
 
             def __init__(self, **kwargs):
                 super().__init__(**kwargs)

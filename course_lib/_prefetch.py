@@ -597,6 +597,13 @@ class Prefetcher:
             turn_in_steps(view.ax)
         # what the page can change, in the order of values(): the controls, then the views
         self.inputs = self.controls + [(v, "value") for v in self.views]
+        # a rendered 3D view that a drag turns by moving two of the controls (the explorer's
+        # ``turned_by``): the indices of those controls, or None
+        pair = getattr(explorer, "turned_by", None) or ()
+        index = {id(c): k for k, (c, n) in enumerate(self.controls) if n == "value"}
+        self.turns = [index[id(c)] for c in pair] if pair and \
+            all(id(c) in index for c in pair) else None
+        self.sliding = False           # the mouse is turning such a view, press to release
         self.turning = None            # the view the mouse is turning, between press and release
         self.sent = {}                 # canonical values -> checksum of the picture sent
         self.epoch = 0                 # mouse releases on the figure seen by the kernel
@@ -623,6 +630,23 @@ class Prefetcher:
         """Each 3D axes' place on the canvas and view, in the order of :meth:`values` (after
         the controls): ``[{"box": [left, top, right, bottom], "view": [elev, azim]}]``."""
         return [{"box": v.box(), "view": list(v.value)} for v in self.views]
+
+    def turn_spec(self):
+        """The rendered 3D view a drag turns by moving two controls (:attr:`turns`), as
+        ``[{"box": [left, top, right, bottom], "controls": [azimuth, elevation]}]`` (indices
+        among the controls), or ``[]``."""
+        if self.turns is None:
+            return []
+        return [{"box": self._screen_box(), "controls": list(self.turns)}]
+
+    def _screen_box(self):
+        """Where the picture lies on the canvas (its axes; the whole canvas if it has none),
+        as :meth:`View.box` gives a 3D axes'."""
+        axes = self.canvas.figure.axes
+        if not axes:
+            return [0.0, 0.0, 1.0, 1.0]
+        x0, y0, x1, y1 = axes[0].get_position().extents
+        return [float(x0), float(1 - y1), float(x1), float(1 - y0)]
 
     def values(self):
         return [_plain(getattr(c, n)) for c, n in self.inputs]
@@ -663,12 +687,15 @@ class Prefetcher:
             # describe (the next views drawn ahead while the mouse rests); anywhere else it
             # may move what no control shows (a point)
             self.turning = self._view_at(content)
+            # or on a rendered view turned by two sliders: the page moves them, and the
+            # pictures kept are those of their values; nothing is stale
+            self.sliding = self.turning is None and self._on_turned_picture(content)
             if self.turning is not None:
                 self.focus = self.turning
                 self.spent = 0.0
                 self._turned_from = self.turning.value
                 self.wake()                # no frame follows a press: nothing else wakes it
-            else:
+            elif not self.sliding:
                 # the page forgot its pictures at the press: none is held while the mouse
                 # may move what the values do not show (every frame of a drag is drawn now)
                 self.sent.clear()
@@ -680,7 +707,9 @@ class Prefetcher:
                 self.heading = (self.turning, np.subtract(now, last, dtype=float))
                 self.spent = 0.0           # an input, as a slider's change is
         elif content.get("type") == "button_release":
-            if self.turning is not None:
+            if self.sliding:
+                self.sliding = False
+            elif self.turning is not None:
                 self.focus, self.turning = self.turning, None
             else:
                 # a point dragged: every picture drawn before is stale
@@ -688,16 +717,34 @@ class Prefetcher:
                 self.sent.clear()
             self.spent = 0.0
 
-    def _view_at(self, content):
-        """The view whose axes holds a mouse message's point (x, y: canvas pixels from the top
-        left), or None."""
+    def _at(self, content):
+        """A left press's point as fractions of the canvas (y down), or None (another button,
+        or no point)."""
         try:
             fx = float(content["x"]) / self.canvas.figure.bbox.width
             fy = float(content["y"]) / self.canvas.figure.bbox.height
         except (KeyError, TypeError, ValueError, ZeroDivisionError):
             return None
-        if content.get("button", 0) != 0:
+        return None if content.get("button", 0) != 0 else (fx, fy)
+
+    def _on_turned_picture(self, content):
+        """Whether a mouse message's point lies on the picture a drag turns
+        (:meth:`turn_spec`), the toolbar's pan and zoom off."""
+        point = self._at(content)
+        axes = self.canvas.figure.axes
+        if self.turns is None or point is None or \
+                (axes and axes[0].get_navigate_mode() is not None):
+            return False
+        left, top, right, bottom = self._screen_box()
+        return left <= point[0] <= right and top <= point[1] <= bottom
+
+    def _view_at(self, content):
+        """The view whose axes holds a mouse message's point (x, y: canvas pixels from the top
+        left), or None."""
+        point = self._at(content)
+        if point is None:
             return None
+        fx, fy = point
         for view in self.views:
             if view.ax.get_navigate_mode() is not None:
                 return None                # the toolbar's pan or zoom: the mouse moves no view

@@ -547,3 +547,39 @@ def test_a_frame_the_kernel_sent_before_is_sent_again_whole_if_the_page_keeps_an
     explorer.update()
     canvas.draw()
     assert len([m for m in sent if m["type"] == "binary"]) == 1, sent
+
+
+def test_a_drag_on_a_rendered_view_turns_it_by_its_sliders_and_keeps_the_pictures():
+    """A pyvista view is a picture on the canvas, turned by two sliders: a drag across it
+    moves those sliders in the page (as a 3D axes turns), so the pictures kept (of the
+    sliders' values) stay good. The page is told which two, and where the picture lies; a
+    press and release on it leave the pictures kept alone, where a press on a figure's points
+    (a point dragged) makes them stale."""
+    from course_lib.widgets.isovalue import IsosurfaceExplorer
+
+    explorer = IsosurfaceExplorer()
+    prefetch = _prefetch.attach(explorer)
+    (spec,) = prefetch.turn_spec()
+    azimuth, elevation = (prefetch.controls[k][0] for k in spec["controls"])
+    assert (azimuth, elevation) == (explorer.azimuth, explorer.elevation)
+    # the picture fills the canvas: its box, as the page measures the mouse (y down)
+    assert spec["box"] == [0.0, 0.0, 1.0, 1.0]
+    assert {"kind": "turn", "what": "the 3D view", "start": (0.35, 0.5),
+            "end": (0.65, 0.5)} in explorer.mouse_gestures()
+    prefetch.sent[("kept",)] = 1
+    width, height = explorer.fig.canvas.figure.bbox.size
+    press = {"type": "button_press", "button": 0, "x": 0.4 * width, "y": 0.5 * height}
+    prefetch._mouse(None, press, [])
+    assert prefetch.sliding and prefetch.sent
+    prefetch._mouse(None, {"type": "button_release", "button": 0, "x": 5, "y": 5}, [])
+    assert not prefetch.sliding and prefetch.sent and prefetch.epoch == 0
+    # another button than the left one turns nothing: as a point's drag, it may change what
+    # the values do not show
+    prefetch._mouse(None, {**press, "button": 2}, [])
+    assert not prefetch.sliding and not prefetch.sent
+
+
+def test_explorers_without_a_rendered_view_have_no_turn():
+    explorer, prefetch = _bezier()
+    assert prefetch.turn_spec() == [] and prefetch.turns is None
+    assert all(g["kind"] != "turn" for g in explorer.mouse_gestures())

@@ -498,6 +498,11 @@ class Explorer:
     #: leaves the explorer's own work on the event loop (a settle timer, a refinement), and
     #: the status lines that report it, alone
     drawing_ahead = False
+    #: ``(azimuth slider, elevation slider)`` that a drag across the :meth:`screen` turns, as
+    #: the mouse turns a 3D axes (180 degrees per width, and per height), or None: the page
+    #: moves the two sliders itself and paints the pictures drawn ahead for their values
+    #: (the pyvista explorers, whose view is a rendered picture, not a matplotlib 3D axes)
+    turned_by = None
 
     def update(self):  # pragma: no cover - every subclass overrides it
         raise NotImplementedError
@@ -547,6 +552,9 @@ class Explorer:
                 gestures.append({"kind": "turn", "what": f"3D axes {k}",
                                  "start": (float(box.x0 + 0.35 * box.width), y),
                                  "end": (float(box.x0 + 0.65 * box.width), y)})
+        if self.turned_by is not None:
+            gestures.append({"kind": "turn", "what": "the 3D view",
+                             "start": (0.35, 0.5), "end": (0.65, 0.5)})
         return gestures
 
     def _canvas_fraction(self, ax, xy):

@@ -608,6 +608,7 @@ class IsosurfaceExplorer(PlotterExplorer):
                                                "decider", "each cube decides alone"))
         self.azimuth = slider("view azimuth °", self.state.azimuth, -180, 180, 5)
         self.elevation = slider("view elevation °", self.state.elevation, -80, 80, 5)
+        self.turned_by = (self.azimuth, self.elevation)    # and a drag across the view
         align([self.volume, self.level, self.azimuth, self.elevation])
         self._level_range()
         if self.level.value != self.state.level:        # put on the slider's grid

@@ -184,6 +184,7 @@ class SurfaceExplorer(PlotterExplorer):
                                min=-1, max=1, step=0.02)
         self.azimuth = slider("view azimuth °", self.state.azimuth, -180, 180, 2)
         self.elevation = slider("view elevation °", self.state.elevation, -10, 80, 2)
+        self.turned_by = (self.azimuth, self.elevation)    # and a drag across the view
         align([self.i, self.j, self.lift, self.weight, self.azimuth, self.elevation])
         bind(self.state, {"kind": self.kind, "i": self.i, "j": self.j, "lift": self.lift,
                           "weight": self.weight, "azimuth": self.azimuth,
