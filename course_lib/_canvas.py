@@ -251,22 +251,23 @@ def _whole_frames(canvas):
         pixels = np.asarray(canvas.get_renderer().buffer_rgba())
         last, canvas._course_last = canvas._course_last, pixels.copy()
         canvas._course_place = None
-        # asked first: the page may show a picture kept for these values that is not this one
-        # (a ray tracer's preview where the kernel shows the full image again, the picture it
-        # sent last); then the whole frame goes, even if the kernel sent the same one before
         prefetch = getattr(canvas, "_course_prefetch", None)
-        kept = None
-        if prefetch is not None and prefetch.decoder is not None:
-            kept = prefetch.frame_drawn(canvas._course_last)
-            if kept:
-                return None                          # the page holds this picture: told so
-        if canvas._course_regions and kept is None and last is not None and \
-                last.shape == pixels.shape:
+        if prefetch is not None and prefetch.decoder is None:
+            prefetch = None
+        rows = cols = None
+        if canvas._course_regions and last is not None and last.shape == pixels.shape:
             changed = pixels.view(np.uint32)[..., 0] != last.view(np.uint32)[..., 0]
             rows = np.flatnonzero(changed.any(axis=1))
-            if rows.size == 0:
-                return None                          # the same picture: nothing to send
+            # the same picture: nothing to send, unless the page may be showing another one
+            # kept for these values (a ray tracer's preview where the kernel shows the full
+            # image again, the frame it sent last): then the whole frame goes, and a "drop"
+            if rows.size == 0 and (prefetch is None or not prefetch.kept_unlike(pixels)):
+                return None
             cols = np.flatnonzero(changed.any(axis=0))
+        kept = prefetch.frame_drawn(canvas._course_last) if prefetch is not None else None
+        if kept:
+            return None                              # the page holds this picture: told so
+        if rows is not None and rows.size:           # (else: the whole frame, see above)
             y0, y1, x0, x1 = rows[0], rows[-1] + 1, cols[0], cols[-1] + 1
             pixels = pixels[y0:y1, x0:x1]
             canvas._course_place = (int(x0), int(y0))

@@ -753,6 +753,11 @@ class Prefetcher:
                 return view
         return None
 
+    def kept_unlike(self, pixels):
+        """Whether the page was sent a picture for the current values that is not `pixels`."""
+        crc = self.sent.get(self.key())
+        return crc is not None and crc != _crc(pixels)
+
     def frame_drawn(self, pixels):
         """The kernel has drawn a frame of the current values: if the page was sent this very
         picture for them, tell it so and return True (the frame need not be sent); if it was
