@@ -544,7 +544,7 @@ def test_a_frame_the_kernel_sent_before_is_sent_again_whole_if_the_page_keeps_an
     assert frames[0]["state"] == prefetch.values()
     assert prefetch.key() not in prefetch.sent
     # and once the page has it, the same frame again is nothing to send
-    explorer.update()
+    canvas._png_is_old = True
     canvas.draw()
     assert len([m for m in sent if m["type"] == "binary"]) == 1, sent
 
@@ -583,3 +583,30 @@ def test_explorers_without_a_rendered_view_have_no_turn():
     explorer, prefetch = _bezier()
     assert prefetch.turn_spec() == [] and prefetch.turns is None
     assert all(g["kind"] != "turn" for g in explorer.mouse_gestures())
+
+
+def test_a_ray_tracers_full_image_shown_live_always_goes_whole(monkeypatch):
+    """Whatever the page keeps for the values (a preview the kernel no longer counts on, say),
+    a full image the kernel shows live reaches it whole, even if it is the frame sent last;
+    pictures drawn ahead and previews go as before (nothing when unchanged)."""
+    from course_lib.widgets.raytracer import RayTracerExplorer
+
+    explorer = RayTracerExplorer()
+    prefetch = _prefetch.attach(explorer)
+    canvas = explorer.fig.canvas
+    canvas.draw()
+    prefetch.decoder = _Decoder()
+    monkeypatch.setattr(prefetch, "wake", lambda delay=0: None)
+    sent = _page_messages(canvas)
+    explorer.update()                                # the cached full image again, unchanged
+    canvas.draw()
+    frames = [m for m in sent if m["type"] == "binary"]
+    assert len(frames) == 1 and "x" not in frames[0], sent
+    assert frames[0]["state"] == prefetch.values()
+    explorer._full = None                            # now a preview: drawn, then unchanged
+    explorer.update()
+    canvas.draw()
+    assert len([m for m in sent if m["type"] == "binary"]) == 2
+    canvas._png_is_old = True
+    canvas.draw()
+    assert len([m for m in sent if m["type"] == "binary"]) == 2, sent

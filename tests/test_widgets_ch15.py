@@ -262,10 +262,10 @@ def test_the_full_image_comes_in_bands_and_an_input_between_two_abandons_it(monk
         ex = made["explorer"] = raytracer.RayTracerExplorer(settle_seconds=0.01, band_rows=60)
         show = ex.show_frame
 
-        def recorded(pixels):                # each picture put on the canvas
+        def recorded(pixels, **how):         # each picture put on the canvas
             shown.append((ex.current["preview"], ex.state.max_depth,
                           ex.state.mirror_reflectivity))
-            show(pixels)
+            show(pixels, **how)
 
         ex.show_frame = recorded
         ex.depth.value = 1

@@ -611,9 +611,13 @@ class Explorer:
             canvas.toolbar_visible = False          # nothing to pan or zoom in a picture
         return canvas
 
-    def show_frame(self, pixels):
-        """Show `pixels` ((height, width, 3) uint8, row 0 at the top) on the :meth:`screen`."""
+    def show_frame(self, pixels, whole=False):
+        """Show `pixels` ((height, width, 3) uint8, row 0 at the top) on the :meth:`screen`.
+        ``whole=True`` sends the page the whole frame even if it is the one sent last (a
+        finished picture, which must replace whatever the page shows for its values)."""
         self._frame.set_data(pixels)
+        if whole:
+            self.fig.canvas._course_last = None
         self.fig.canvas.draw_idle()
 
     def frame(self):

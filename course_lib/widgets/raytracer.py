@@ -353,7 +353,9 @@ class RayTracerExplorer(Explorer):
 
     def _show(self, s, ms, status=True):
         self.current = s
-        self.show_frame(_on_screen(s["image"], DISPLAY))
+        # a full image shown live goes whole: the page may show a preview it keeps for these
+        # values that the kernel no longer counts on
+        self.show_frame(_on_screen(s["image"], DISPLAY), whole=status and not s["preview"])
         self.info.value = s["text"]
         if not status:
             return
