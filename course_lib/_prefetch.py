@@ -239,6 +239,13 @@ def _on_grid(control, k):
     return float(round(value, 12))
 
 
+def _box(ax):
+    """Where axes `ax` lies on its canvas: ``[left, top, right, bottom]``, fractions of the
+    canvas with y pointing down, as the page measures the mouse."""
+    x0, y0, x1, y1 = ax.get_position().extents
+    return [float(x0), float(1 - y1), float(x1), float(1 - y0)]
+
+
 class View:
     """A 3D axes' view as a control of its explorer: ``value`` is ``(elevation, azimuth)`` in
     degrees, whole degrees once the student has turned it (:func:`turn_in_steps`). Setting it
@@ -275,8 +282,7 @@ class View:
     def box(self):
         """Where the axes lies on its canvas: ``[left, top, right, bottom]``, fractions of the
         canvas with y pointing down, as the page measures the mouse."""
-        x0, y0, x1, y1 = self.ax.get_position().extents
-        return [float(x0), float(1 - y1), float(x1), float(1 - y0)]
+        return _box(self.ax)
 
     def steps(self):
         """The views a turn reaches next, nearest first: the azimuth one whole degree at a
@@ -643,10 +649,7 @@ class Prefetcher:
         """Where the picture lies on the canvas (its axes; the whole canvas if it has none),
         as :meth:`View.box` gives a 3D axes'."""
         axes = self.canvas.figure.axes
-        if not axes:
-            return [0.0, 0.0, 1.0, 1.0]
-        x0, y0, x1, y1 = axes[0].get_position().extents
-        return [float(x0), float(1 - y1), float(x1), float(1 - y0)]
+        return _box(axes[0]) if axes else [0.0, 0.0, 1.0, 1.0]
 
     def values(self):
         return [_plain(getattr(c, n)) for c, n in self.inputs]

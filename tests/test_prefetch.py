@@ -179,6 +179,19 @@ def _page_messages(canvas):
     return sent
 
 
+def _ray_tracer_on_a_page(monkeypatch):
+    """A ray tracer whose pictures a page keeps, and what its canvas sends that page."""
+    from course_lib.widgets.raytracer import RayTracerExplorer
+
+    explorer = RayTracerExplorer()
+    prefetch = _prefetch.attach(explorer)
+    canvas = explorer.fig.canvas
+    canvas.draw()
+    prefetch.decoder = _Decoder()
+    monkeypatch.setattr(prefetch, "wake", lambda delay=0: None)
+    return explorer, prefetch, canvas, _page_messages(canvas)
+
+
 def _control(prefetch, description):
     return next(c for c, _ in prefetch.controls if c.description == description)
 
@@ -520,15 +533,7 @@ def test_a_frame_the_kernel_sent_before_is_sent_again_whole_if_the_page_keeps_an
     (the inputs between were never drawn: the page held them). That frame must still reach the
     page, whole, with a "drop" for the kept picture: else the preview stays on the screen
     (seen in the browser: a slider moved and moved back left 33,534 pixels of the preview)."""
-    from course_lib.widgets.raytracer import RayTracerExplorer
-
-    explorer = RayTracerExplorer()
-    prefetch = _prefetch.attach(explorer)
-    canvas = explorer.fig.canvas
-    canvas.draw()
-    prefetch.decoder = _Decoder()
-    monkeypatch.setattr(prefetch, "wake", lambda delay=0: None)
-    sent = _page_messages(canvas)
+    explorer, prefetch, canvas, sent = _ray_tracer_on_a_page(monkeypatch)
     full = np.asarray(canvas.get_renderer().buffer_rgba()).copy()
     assert not explorer.current["preview"]
     # the page was sent another picture for these values (a preview, say), and the
@@ -589,15 +594,7 @@ def test_a_ray_tracers_full_image_shown_live_always_goes_whole(monkeypatch):
     """Whatever the page keeps for the values (a preview the kernel no longer counts on, say),
     a full image the kernel shows live reaches it whole, even if it is the frame sent last;
     pictures drawn ahead and previews go as before (nothing when unchanged)."""
-    from course_lib.widgets.raytracer import RayTracerExplorer
-
-    explorer = RayTracerExplorer()
-    prefetch = _prefetch.attach(explorer)
-    canvas = explorer.fig.canvas
-    canvas.draw()
-    prefetch.decoder = _Decoder()
-    monkeypatch.setattr(prefetch, "wake", lambda delay=0: None)
-    sent = _page_messages(canvas)
+    explorer, prefetch, canvas, sent = _ray_tracer_on_a_page(monkeypatch)
     explorer.update()                                # the cached full image again, unchanged
     canvas.draw()
     frames = [m for m in sent if m["type"] == "binary"]
