@@ -239,7 +239,7 @@ def _on_grid(control, k):
     return float(round(value, 12))
 
 
-def _box(ax):
+def _axes_box(ax):
     """Where axes `ax` lies on its canvas: ``[left, top, right, bottom]``, fractions of the
     canvas with y pointing down, as the page measures the mouse."""
     x0, y0, x1, y1 = ax.get_position().extents
@@ -282,7 +282,7 @@ class View:
     def box(self):
         """Where the axes lies on its canvas: ``[left, top, right, bottom]``, fractions of the
         canvas with y pointing down, as the page measures the mouse."""
-        return _box(self.ax)
+        return _axes_box(self.ax)
 
     def steps(self):
         """The views a turn reaches next, nearest first: the azimuth one whole degree at a
@@ -649,7 +649,7 @@ class Prefetcher:
         """Where the picture lies on the canvas (its axes; the whole canvas if it has none),
         as :meth:`View.box` gives a 3D axes'."""
         axes = self.canvas.figure.axes
-        return _box(axes[0]) if axes else [0.0, 0.0, 1.0, 1.0]
+        return _axes_box(axes[0]) if axes else [0.0, 0.0, 1.0, 1.0]
 
     def values(self):
         return [_plain(getattr(c, n)) for c, n in self.inputs]

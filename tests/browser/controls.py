@@ -307,6 +307,43 @@ def wait_until_steady(view, timeout=10.0):
     return current
 
 
+# Whether any widget model of the open notebook still has a message in flight or held back.
+# ipywidgets lets each model have one update in flight until the kernel reports idle for it and
+# holds later changes meanwhile; a button of another model is sent at once, so a click made right
+# after a slider was moved back could reach the kernel before the slider's last value (then the
+# step slider ends where the held value puts it, and its "previous step" button stays greyed
+# out). A student's hand is slower than this; the drive waits instead.
+_IN_FLIGHT = r"""async () => {
+  const panel = window.jupyterapp.shell.currentWidget;
+  const managers = new Set();
+  for (const cell of panel.content.widgets) {
+    const stack = cell.outputArea ? [...cell.outputArea.widgets] : [];
+    while (stack.length) {
+      const w = stack.pop();
+      if (w._manager && w._manager.promise) managers.add(await w._manager.promise);
+      if (w.widgets) stack.push(...w.widgets);
+    }
+  }
+  let busy = 0;
+  for (const manager of managers)
+    for (const model of await Promise.all(Object.values(manager._models)))
+      if (model._pending_msgs > 0 || model._msg_buffer !== null) busy++;
+  return busy;
+}"""
+
+
+def wait_until_sent(page, timeout=5.0):
+    """Wait until every widget update the page made has left it (:data:`_IN_FLIGHT`): what is
+    operated next then reaches the kernel after it. Returns the number of models still busy
+    when the time was up (0: all sent)."""
+    deadline = time.monotonic() + timeout
+    while True:
+        busy = page.evaluate(_IN_FLIGHT)
+        if busy == 0 or time.monotonic() > deadline:
+            return busy
+        time.sleep(0.05)
+
+
 def wait_for_return(view, before, tolerance, timeout=20.0):
     """Snapshots until the picture is back to `before` (within `tolerance` pixels); returns
     the number of pixels still different. The wait is long because on a loaded machine the
@@ -348,16 +385,21 @@ def drive(view, gestures, min_pixels, expected=None):
     park_mouse(view.page)
     wait_until_steady(view)
     while True:
+        wait_until_sent(view.page)
         current = [c for c in controls(view) if c["visible"] and not c["disabled"]]
         todo = [c for c in current if c["kind"] not in CHOOSERS and c["key"] not in operated]
         if todo:
             control = min(todo, key=destructive)
-            if element(view, control["index"]).is_disabled() and \
-                    waited.get(control["key"], 0) < 25:
+            if element(view, control["index"]).is_disabled():
                 # greyed out since the list was read (a step button at the first step once the
                 # kernel's last answer came): read the list again, as a student looks again
                 waited[control["key"]] = waited.get(control["key"], 0) + 1
-                time.sleep(0.2)
+                if waited[control["key"]] < 25:
+                    time.sleep(0.2)
+                    continue
+                operated.add(control["key"])
+                problems.append(f"{control['key']}: listed as enabled 25 times over 5 s, and "
+                                "greyed out each time it was to be operated")
                 continue
             operated.add(control["key"])
             before = snapshot(view)
