@@ -48,8 +48,9 @@ from ._canvas import _kernel_loop
 __all__ = ["Prefetcher", "attach", "controls", "render_at"]
 
 #: Pictures prefetched around the slider moved last (each side together).
-FOCUS_FRAMES = 64
-#: Pictures the kernel keeps track of (and the page keeps) before it stops prefetching.
+FOCUS_FRAMES = 160
+#: Pictures the kernel keeps track of (and the page keeps); beyond, the one least likely to be
+#: wanted is dropped on both sides for each one more likely drawn (:meth:`Prefetcher.step`).
 MAX_FRAMES = 300
 #: Pictures further along the control moved last drawn before the other controls' steps.
 AHEAD = 8
@@ -612,6 +613,7 @@ class Prefetcher:
         self.sliding = False           # the mouse is turning such a view, press to release
         self.turning = None            # the view the mouse is turning, between press and release
         self.sent = {}                 # canonical values -> checksum of the picture sent
+        self.sent_values = {}          # canonical values -> the values, as the page has them
         self.epoch = 0                 # mouse releases on the figure seen by the kernel
         self.focus = None
         self.heading = None            # (control, how far it moved last): the way it goes
@@ -623,6 +625,7 @@ class Prefetcher:
         self.spent = 0.0
         self.handle = None
         self.frames = 0                # pictures sent (the tests read it)
+        self.dropped = 0               # pictures dropped to make room for likelier ones
         for control, name in self.controls:
             control.observe(self._moved, names=name)
         self.canvas.on_msg(self._mouse)
@@ -801,6 +804,11 @@ class Prefetcher:
         first; `values` are those of every control in the page once the student has set
         `control` to `value` (the picture is kept under them: a choice that sets other
         controls in the kernel is found in the page before those reach it)."""
+        return [item for item in self._wanted() if self.key(item[2]) not in self.sent]
+
+    def _wanted(self):
+        """:meth:`plan` with the pictures already sent: every picture worth keeping for the
+        current values, most likely first (a value may come twice)."""
         movable = [(c, n) for c, n in self.inputs if id(c) not in self.skip]
         lists = {id(c): candidates(c, n) for c, n in movable}
         focus = self.focus
@@ -836,9 +844,30 @@ class Prefetcher:
         for control, value in order:
             values = list(now)
             values[index[id(control)]] = _plain(value)
-            if self.key(values) not in self.sent:
-                out.append((control, value, values))
+            out.append((control, value, values))
         return out
+
+    def _make_room(self, plan):
+        """Drop the kept picture least likely to be wanted, on both sides, if it is less
+        likely than the next one planned (`plan`'s first); return whether one was dropped.
+
+        The likelihood is the place in :meth:`_wanted` (the current values' own picture
+        first of all); pictures not wanted at all go first, the oldest of them first."""
+        rank = {self.key(): -1}
+        for r, (_, _, values) in enumerate(self._wanted()):
+            rank.setdefault(self.key(values), r)
+        least = len(rank) + 1
+        victim, worst = None, rank.get(self.key(plan[0][2]), least)
+        for key in self.sent:                   # oldest first: the first of equals is kept
+            r = rank.get(key, least)
+            if r > worst and key in self.sent_values:
+                victim, worst = key, r
+        if victim is None:
+            return False
+        del self.sent[victim]
+        self.decoder.send({"type": "drop", "state": self.sent_values.pop(victim)})
+        self.dropped += 1
+        return True
 
     def wake(self, delay=IDLE_S):
         """Prefetch once the kernel has been idle for `delay` seconds."""
@@ -865,10 +894,10 @@ class Prefetcher:
             return
         if self._busy(explorer):
             return self.wake()
-        if self.spent >= BUDGET_S or len(self.sent) >= MAX_FRAMES:
+        if self.spent >= BUDGET_S:
             return
         plan = self.plan()
-        if not plan:
+        if not plan or (len(self.sent) >= MAX_FRAMES and not self._make_room(plan)):
             return
         control, value, values = plan[0]
         began = time.perf_counter()
@@ -885,7 +914,11 @@ class Prefetcher:
         finally:
             self.drawing = False
         png = _png(pixels)
-        self.sent[self.key(values)] = _crc(pixels)
+        key = self.key(values)
+        self.sent[key] = _crc(pixels)
+        self.sent_values[key] = values
+        if len(self.sent_values) > 2 * MAX_FRAMES:          # forget those no longer kept
+            self.sent_values = {k: v for k, v in self.sent_values.items() if k in self.sent}
         self.decoder.send({"type": "frame", "state": values, "epoch": self.epoch},
                           buffers=[png])
         self.frames += 1

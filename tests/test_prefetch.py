@@ -209,9 +209,11 @@ def test_the_plan_takes_one_step_of_every_control_then_goes_further_along_the_on
     assert sorted(plan[:2]) == [("t", 0.49), ("t", 0.51)]
     further = [v for d, v in plan[2:] if d == "t"]
     assert further[:4] == [0.52, 0.53, 0.54, 0.48]
-    assert len(further) + 2 == _prefetch.FOCUS_FRAMES
-    ups = [v for v in further if v > 0.5]
-    assert len(ups) >= 2.5 * (len(further) - len(ups)), further
+    # as many as FOCUS_FRAMES, or every other position of the slider if it has fewer
+    assert len(further) + 2 == min(_prefetch.FOCUS_FRAMES, round((t.max - t.min) / t.step))
+    head = further[:len(further) // 2]             # before the steps up run out
+    ups = [v for v in head if v > 0.5]
+    assert len(ups) >= 2.5 * (len(head) - len(ups)), further
     t.value = 0.45                                  # and then down
     # ranks (place in the nearest-first list, times 1 on the way, 3 back): 0.44 1, 0.43 3,
     # 0.42 5, 0.46 6, 0.41 7
@@ -230,6 +232,33 @@ def test_a_step_sends_the_picture_and_the_values_the_page_will_have():
     assert np.array_equal(picture, live)
     assert prefetch.key(values) in prefetch.sent
     assert prefetch.plan()[0][:2] != (control, value)            # not drawn twice
+
+
+def test_when_the_pictures_kept_are_many_the_least_likely_makes_room_on_both_sides(
+        monkeypatch):
+    """Kept pictures are bounded: once there are MAX_FRAMES, a step drops the kept picture
+    least likely to be wanted (first those no single move of one control from the current
+    values reaches), and only if the next one planned is more likely."""
+    explorer, prefetch = _bezier()
+    monkeypatch.setattr(_prefetch, "MAX_FRAMES", 3)
+    t = _control(prefetch, "t")
+    for _ in range(4):
+        prefetch.step()
+    # full, and none kept is less likely than the next planned: nothing dropped, nothing drawn
+    assert len(prefetch.decoder.messages) == 3 and prefetch.dropped == 0
+    kept = {tuple(m["state"]) for m, _ in prefetch.decoder.messages}
+    t.value = 0.7                                  # far along: what was kept is less likely
+    now = prefetch.values()
+    unreachable = [values for values in kept
+                   if sum(a != b for a, b in zip(values, now)) > 1]
+    assert unreachable, "a kept picture two controls away from the new values"
+    prefetch.step()
+    (drop, _), (frame, _) = prefetch.decoder.messages[-2:]
+    assert drop["type"] == "drop" and tuple(drop["state"]) in unreachable
+    assert frame["type"] == "frame"
+    assert frame["state"][prefetch.inputs.index((t, "value"))] in (0.69, 0.71)
+    assert len(prefetch.sent) == 3 and prefetch.key(drop["state"]) not in prefetch.sent
+    assert prefetch.dropped == 1
 
 
 def test_a_kernel_frame_is_not_sent_again_when_the_page_holds_it_and_clears_it_if_unlike():
