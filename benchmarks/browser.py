@@ -439,7 +439,16 @@ def measure_explorer(bench, k, view, explorer, samples, seconds):
         def along(f):
             phase = 1 - abs(2 * ((2 * f) % 1.0) - 1)
             return (ex + (sx - ex) * phase, ey + (sy - ey) * phase)
-        fps, behind, moves, kept, changes = bench.continuous(k, (ex, ey), along, seconds)
+        # a rendered view turned through its sliders changes as often as their values do
+        # (the first, the azimuth, for this sideways drag): counted on its read-out
+        readout = None
+        for s in range(sliders.count()):
+            label = sliders.nth(s).locator(".widget-label").first
+            if gesture.get("sliders") and label.count() and \
+                    label.inner_text().strip() == gesture["sliders"][0]:
+                readout = sliders.nth(s).locator(".widget-readout").first
+        fps, behind, moves, kept, changes = bench.continuous(k, (ex, ey), along, seconds,
+                                                             handle=readout)
         rows.append(_row(name, f"{gesture['kind']} {gesture['what']}", got, fps, behind, moves,
                          kept, changes,
                          bench.kernel.json("import json; print(json.dumps(_bench))")))

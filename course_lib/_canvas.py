@@ -414,17 +414,18 @@ function pictures(canvas, controls, views, turns) {
     const last = p.last;
     p.last = now;
     if (!last || last.length !== now.length) return;
+    // every value that moved goes on the same way (a view turned by two sliders moves both)
     const moved = now.map((v, i) => i).filter((i) => keyOf([now[i]]) !== keyOf([last[i]]));
-    if (moved.length !== 1) return;
-    const i = moved[0], a = last[i], b = now[i];
+    if (moved.length === 0) return;
     const numbers = (v) => Array.isArray(v) ? v.every((x) => typeof x === 'number')
                                             : typeof v === 'number';
-    if (!numbers(a) || !numbers(b) || Array.isArray(a) !== Array.isArray(b)) return;
-    const further = (k) => Array.isArray(b) ? b.map((x, j) => x + k * (x - a[j]))
-                                            : b + k * (b - a);
+    if (!moved.every((i) => numbers(last[i]) && numbers(now[i])
+                            && Array.isArray(last[i]) === Array.isArray(now[i]))) return;
+    const further = (a, b, k) => Array.isArray(b) ? b.map((x, j) => x + k * (x - a[j]))
+                                                  : b + k * (b - a);
     for (let k = 1; k <= DECODE_AHEAD; k++) {
       const values = [...now];
-      values[i] = further(k);
+      for (const i of moved) values[i] = further(last[i], now[i], k);
       const key = keyOf(values);
       const entry = p.entries.get(key);
       if (entry && !entry.bitmap) p.decode(key, entry);
@@ -533,6 +534,7 @@ function pictures(canvas, controls, views, turns) {
     if (p.decoded.length < KEEP_DECODED) p.decode(key, entry);   // the nearest come first
   };
   p.show = () => {                   // a control changed in the page
+    if (p.batching) return;          // more controls change together: shown once, after
     const values = p.values();
     const key = keyOf(values);
     p.seq += 1;
@@ -617,15 +619,22 @@ function pictures(canvas, controls, views, turns) {
     slide.exact[0] -= ((point[0] - slide.from[0]) / w) * 180;
     slide.exact[1] += ((point[1] - slide.from[1]) / h) * 180;
     slide.from = point;
-    slide.t.controls.forEach((i, j) => {
-      const [model, name] = controls[i];
-      const value = onGrid(model, slide.exact[j]);
-      if (model.get(name) !== value) {
-        model.set(name, value);    // the kept picture painted (show), the kernel told
-        model.save_changes();
-        p.slid += 1;
-      }
-    });
+    // both sliders set before the page looks for the picture of their values (one picture
+    // for the pair, not one for each half-way pair), then the kernel told
+    const changed = [];
+    p.batching = true;
+    try {
+      slide.t.controls.forEach((i, j) => {
+        const [model, name] = controls[i];
+        const value = onGrid(model, slide.exact[j]);
+        if (model.get(name) !== value) { model.set(name, value); changed.push(model); }
+      });
+    } finally { p.batching = false; }
+    if (changed.length) {
+      p.show();                    // the kept picture painted
+      changed.forEach((model) => model.save_changes());
+      p.slid += 1;
+    }
   }, true);
   document.addEventListener('mousemove', (event) => {
     const turn = p.turn;

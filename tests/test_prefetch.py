@@ -598,8 +598,8 @@ def test_a_drag_on_a_rendered_view_turns_it_by_its_sliders_and_keeps_the_picture
     assert (azimuth, elevation) == (explorer.azimuth, explorer.elevation)
     # the picture fills the canvas: its box, as the page measures the mouse (y down)
     assert spec["box"] == [0.0, 0.0, 1.0, 1.0]
-    assert {"kind": "turn", "what": "the 3D view", "start": (0.35, 0.5),
-            "end": (0.65, 0.5)} in explorer.mouse_gestures()
+    assert {"kind": "turn", "what": "the 3D view", "start": (0.35, 0.5), "end": (0.65, 0.5),
+            "sliders": ["view azimuth °", "view elevation °"]} in explorer.mouse_gestures()
     prefetch.sent[("kept",)] = 1
     width, height = explorer.fig.canvas.figure.bbox.size
     press = {"type": "button_press", "button": 0, "x": 0.4 * width, "y": 0.5 * height}

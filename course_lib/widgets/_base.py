@@ -520,7 +520,8 @@ class Explorer:
         -------
         list of dict
             ``{"kind": "drag" | "turn" | "click", "what": str, "start": (x, y), "end": (x, y)}``
-            (a click has ``end == start``).
+            (a click has ``end == start``); a rendered view turned through two sliders
+            (``turned_by``) adds ``"sliders"``, their descriptions.
 
         Examples
         --------
@@ -553,8 +554,10 @@ class Explorer:
                                  "start": (float(box.x0 + 0.35 * box.width), y),
                                  "end": (float(box.x0 + 0.65 * box.width), y)})
         if self.turned_by is not None:
+            # (the sliders it moves named: the view changes only as often as their values)
             gestures.append({"kind": "turn", "what": "the 3D view",
-                             "start": (0.35, 0.5), "end": (0.65, 0.5)})
+                             "start": (0.35, 0.5), "end": (0.65, 0.5),
+                             "sliders": [c.description for c in self.turned_by]})
         return gestures
 
     def _canvas_fraction(self, ax, xy):
